@@ -1,0 +1,22 @@
+"""zener-sym: Zener's sphere-plate impact, its homotopy-analysis solution re-derived with SymPy,
+and numeric kernels generated from that derivation.
+
+    >>> import zener_sym as zs
+    >>> s = zs.summary(1.01, model="exact")
+    >>> round(s.e, 6)
+    0.180735
+"""
+from .api import History, Summary, history, summary
+from .models import REGISTRY, FieldUnavailableError
+
+__version__ = "0.1.0"
+
+
+def __getattr__(name):
+    # MODELS reflects the registry at the time of asking, so later plug-ins show up.
+    if name == "MODELS":
+        return tuple(REGISTRY)
+    raise AttributeError(f"module 'zener_sym' has no attribute {name!r}")
+
+
+__all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError"]

@@ -1,0 +1,143 @@
+"""The uniform API: ``summary`` and ``history`` for every registered model."""
+from __future__ import annotations
+
+import numpy as np
+
+from . import params
+from .models import HISTORY_FIELDS, SUMMARY_FIELDS, get_model
+
+__all__ = ["Summary", "History", "summary", "history"]
+
+
+class _Fields:
+    """Named dimensionless fields; asking for one the model cannot give raises a clear error."""
+
+    _all: tuple = ()
+    _kind = ""
+
+    def __init__(self, model, values: dict, scalar: bool):
+        self.model = model.name
+        self._model = model
+        self._values = values
+        self._scalar = scalar
+
+    def __getattr__(self, name):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name in self._values:
+            v = self._values[name]
+            return float(v.reshape(-1)[0]) if self._scalar else v
+        if name in self._all:
+            raise self._model.unavailable(name, self._kind)
+        raise AttributeError(f"{type(self).__name__} has no field {name!r}; fields: "
+                             f"{', '.join(self._all)}")
+
+    @property
+    def fields(self) -> tuple:
+        """The fields this model gave, in table order."""
+        return tuple(f for f in self._all if f in self._values)
+
+    def as_dict(self) -> dict:
+        return {f: getattr(self, f) for f in self.fields}
+
+    def __repr__(self):
+        body = ", ".join(f"{f}={getattr(self, f)!r}" if self._scalar else f"{f}=<array>"
+                         for f in self.fields)
+        return f"{type(self).__name__}(model={self.model!r}, {body})"
+
+
+class Summary(_Fields):
+    """Dimensionless summary of one impact (or arrays of them): see ``SUMMARY_FIELDS``.
+
+    lam, delta_m (max compression, Eq. 23/24), tau_dc (compression duration), tau_d (contact
+    duration), tau_dr = tau_d - tau_dc, eta = tau_dr / tau_dc (Eq. 61), e (restitution,
+    -delta'(tau_d)), F_m = delta_m^{3/2}, impulse (I at tau_d, Eq. 47), int_F2 (integral of F^2
+    over the contact, Eq. 76), xi = 2 I - I^2 (Eq. 69).
+    """
+
+    _all = SUMMARY_FIELDS
+    _kind = "summary"
+
+
+class History(_Fields):
+    """Dimensionless histories on a time grid: tau, delta, velocity (sphere, 1 - I, Eq. 64),
+    force (delta^{3/2}, Eq. 45), impulse (Eq. 47; also the plate deflection w-bar, Eq. 66)."""
+
+    _all = ("tau",) + HISTORY_FIELDS
+    _kind = "history"
+
+    @property
+    def deflection(self):
+        """Plate deflection w-bar at the centre, equal to the impulse (Eq. 66)."""
+        return self.impulse
+
+
+def _validated(model_name, lam):
+    model = get_model(model_name)
+    arr = params.as_lambda(lam)
+    if model.lam_bound is not None:
+        params.check_lambda_bound(arr, model.lam_bound, model.name, model.bound_reason)
+    return model, arr
+
+
+def summary(lam, model: str = "exact", **options) -> Summary:
+    """Summary quantities of the impact for inelasticity parameter(s) ``lam``.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        Zener's inelasticity parameter lambda >= 0 (Eq. 11). An array gives array fields.
+    model : str
+        One of ``zener_sym.MODELS``.
+    **options
+        Model options, e.g. ``rtol`` or ``backend="mpmath", dps=40`` for ``exact``.
+
+    Returns
+    -------
+    Summary
+
+    Raises
+    ------
+    ValueError
+        For a bad lambda, an unknown model or option, or lambda outside the model's validity.
+    """
+    m, arr = _validated(model, lam)
+    m.check_options(options)
+    flat = arr.reshape(-1)
+    values = m._summary(flat, **options)
+    values = {k: np.asarray(v, dtype=float).reshape(arr.shape) for k, v in values.items()}
+    values["lam"] = arr.copy()
+    _no_silent_nan(values, m)
+    return Summary(m, values, scalar=arr.ndim == 0)
+
+
+def history(lam, tau, model: str = "ham1", **options) -> History:
+    """Histories delta, velocity, force and impulse at times ``tau`` for ``lam``.
+
+    ``lam`` and ``tau`` broadcast by numpy rules (lam of shape (M, 1) with tau of shape (M, N)
+    gives (M, N)). Past the end of contact delta and the force are 0 and the impulse keeps its
+    final value.
+    """
+    m, arr = _validated(model, lam)
+    m.check_options(options)
+    t = params.as_tau(tau)
+    try:
+        lam_b, tau_b = np.broadcast_arrays(arr, t)
+    except ValueError:
+        raise ValueError(
+            f"lambda of shape {arr.shape} does not broadcast against tau of shape {t.shape}"
+        ) from None
+    values = m._history(np.ascontiguousarray(lam_b), np.ascontiguousarray(tau_b), **options)
+    values = {k: np.asarray(v, dtype=float) for k, v in values.items()}
+    values["tau"] = tau_b.copy()
+    _no_silent_nan(values, m)
+    return History(m, values, scalar=False)
+
+
+def _no_silent_nan(values: dict, model) -> None:
+    for k, v in values.items():
+        if not np.all(np.isfinite(v)):
+            raise FloatingPointError(
+                f"model {model.name!r} produced a non-finite {k}; this is a bug, please report "
+                f"it with the lambda values used"
+            )

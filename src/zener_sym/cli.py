@@ -1,14 +1,19 @@
-"""Command line: ``zener-sym`` (also ``python -m zener_sym``)."""
+"""Command line: ``zener-sym`` (also ``python -m zener_sym``).
+
+Each subcommand lives in the module that does the work; the module exposes
+``add_parser(subparsers)``, which registers the subcommand and sets ``func``. To add a command,
+add its module to ``COMMAND_MODULES``.
+"""
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 
-
-def _cmd_report(args) -> int:
-    from . import report
-
-    return report.run()
+#: Modules (relative to zener_sym) that each contribute one subcommand.
+COMMAND_MODULES = [
+    "report",
+]
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -18,8 +23,8 @@ def build_parser() -> argparse.ArgumentParser:
         "derivation, generated kernels and paper audit.",
     )
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
-    r = sub.add_parser("report", help="the main job: every part of the project, summarised")
-    r.set_defaults(func=_cmd_report)
+    for name in COMMAND_MODULES:
+        importlib.import_module(f"zener_sym.{name}").add_parser(sub)
     return p
 
 

@@ -52,3 +52,8 @@ def run(out=print) -> int:
             out(f"## {name}: FAILED\n\n{type(exc).__name__}: {exc}")
         out("")
     return status
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("report", help="the main job: every part of the project, summarised")
+    p.set_defaults(func=lambda args: run())

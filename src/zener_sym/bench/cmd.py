@@ -1,0 +1,125 @@
+"""``zener-sym bench [--quick] --out DIR``: work-precision tables and charts, stability map,
+speed targets, and a BENCHMARKS.md summarising them."""
+from __future__ import annotations
+
+import csv
+import pathlib
+import platform
+import time
+
+import numpy as np
+
+from . import methods as methods_mod, reference, stability, targets, workprecision
+
+
+def _md_table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(r[h]) for h in header) + " |" for r in rows]
+    return "\n".join(lines)
+
+
+def representative(methods):
+    """One method per family for the stability map: the sweep's 1e-6 point, or the only one."""
+    by_fam = {}
+    for m in methods:
+        rt = m.extra.get("rtol")
+        if m.family not in by_fam or (rt is not None and abs(np.log10(rt) + 6) < 0.01):
+            by_fam[m.family] = m
+    return list(by_fam.values())
+
+
+def run(out: pathlib.Path, quick: bool = False, log=print) -> str:
+    t_start = time.perf_counter()
+    out.mkdir(parents=True, exist_ok=True)
+    ref = reference.load()
+    log(f"reference: {ref['source']}")
+    cat = methods_mod.catalogue(quick=quick)
+    rows = workprecision.measure(cat, ref, quick=quick, log=log)
+    workprecision.write_csv(rows, out / "work_precision.csv")
+    charts = workprecision.charts(rows, out, ref["source"])
+    stab, lams, s = stability.run(representative(cat), quick=quick)
+    stability.write_csv(stab, lams, s, out / "stability.csv")
+    stability.chart(stab, lams, s, out / "stability.png")
+    tg = targets.run(quick=quick)
+    if tg:
+        with open(out / "targets.csv", "w", newline="") as fh:
+            w = csv.DictWriter(fh, fieldnames=list(tg[0]))
+            w.writeheader()
+            w.writerows(tg)
+    elapsed = time.perf_counter() - t_start
+
+    best = {}
+    for r in rows:
+        if r["status"] == "ok" and np.isfinite(r["max_rel_error"]):
+            key = (r["family"], r["quantity"])
+            if key not in best or r["max_rel_error"] < best[key]["max_rel_error"]:
+                best[key] = r
+    q_rows = []
+    for (fam, q), r in sorted(best.items()):
+        q_rows.append({"family": fam, "quantity": q, "best error": f"{r['max_rel_error']:.2e}",
+                       "at (method)": r["method"], "s per lambda": f"{r['seconds_per_lambda']:.2e}"})
+    failed = [r for r in rows if r["status"] != "ok"]
+    md = [
+        "# Benchmarks: speed against accuracy",
+        "",
+        f"Produced by `zener-sym bench{' --quick' if quick else ''} --out {out}` in {elapsed:.0f} s "
+        f"on {platform.machine()} / Python {platform.python_version()} "
+        f"({len(cat)} methods). Errors are against {ref['source']} at lambda = "
+        f"{', '.join(f'{x:g}' for x in ref['lambdas'])} ({ref['n_tau']} history points each).",
+        "",
+        "Time: one warm-up call, then repeats until 0.3 s (0.05 s with --quick) have passed, "
+        "median per call, divided by the number of lambda; all methods timed in one process, one "
+        "after the other.",
+        "",
+        "## Work-precision charts",
+        "",
+        *[f"![{p.stem}]({p.name})" for p in charts],
+        "",
+        "## Best accuracy reached per method family",
+        "",
+        _md_table(["family", "quantity", "best error", "at (method)", "s per lambda"], q_rows),
+        "",
+        "## Failures in the work-precision run",
+        "",
+        (_md_table(["method", "quantity", "status"], failed) if failed else "none"),
+        "",
+        "## Stability map",
+        "",
+        "![stability](stability.png)",
+        "",
+        "Smallest lambda in [0, 10] at which each class first appears (force history over the "
+        "contact; `refused` = a ValueError from the API, the intended answer outside a model's "
+        "validity):",
+        "",
+        _md_table(["method"] + list(stability.CLASSES[1:]), stability.summary_rows(stab, lams)),
+        "",
+        "## Speed targets (ratios measured side by side in this run)",
+        "",
+        (_md_table(["target", "grid", "fast_s", "slow_s", "ratio", "required", "met"],
+                   [{**r, "fast_s": f"{r['fast_s']:.3g}", "slow_s": f"{r['slow_s']:.3g}",
+                     "ratio": f"{r['ratio']:.0f}"} for r in tg])
+         if tg else "no target applies yet (the models they compare are not registered)"),
+        "",
+    ]
+    text = "\n".join(md)
+    (out / "BENCHMARKS.md").write_text(text)
+    log(f"wrote {out}/BENCHMARKS.md, charts and CSV tables in {elapsed:.0f} s")
+    return text
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("bench", help="work-precision charts, stability map and speed targets")
+    p.add_argument("--quick", action="store_true", help="thin sweeps; finishes in under a minute")
+    p.add_argument("--out", default="bench-out", help="output folder (default: bench-out)")
+    p.add_argument("--build-reference", action="store_true",
+                   help="recompute and cache the high-precision reference, then exit")
+
+    def go(args):
+        if args.build_reference:
+            reference.write_cache(reference.compute())
+            print(f"wrote {reference.CACHE}")
+            return 0
+        run(pathlib.Path(args.out), quick=args.quick)
+        return 0
+
+    p.set_defaults(func=go)

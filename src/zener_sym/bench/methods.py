@@ -1,0 +1,135 @@
+"""The catalogue of methods the benchmark compares.
+
+A ``Method`` computes, for an array of lambda, some of the summary quantities and (optionally)
+the force history on per-lambda time grids. Families group one method's tolerance sweep into one
+line of a work-precision chart.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from .. import exact
+from ..models import REGISTRY, FieldUnavailableError
+from .reference import QUANTITIES
+
+TOLERANCES = tuple(10.0**-k for k in range(3, 13))
+QUICK_TOLERANCES = (1e-3, 1e-6, 1e-9)
+IVP_METHODS = ("RK45", "DOP853", "LSODA", "Radau")
+
+
+@dataclass
+class Method:
+    name: str
+    family: str
+    summary: Callable | None = None  # lams -> {quantity: array}
+    force: Callable | None = None  # (lams, list of tau arrays) -> list of force arrays
+    notes: str = ""
+    extra: dict = field(default_factory=dict)
+
+
+def _phases(method: str, rtol: float) -> Method:
+    def solve_all(lams):
+        return [exact.solve(x, rtol=rtol, atol=rtol * 1e-3, method=method) for x in lams]
+
+    def summary(lams):
+        sols = solve_all(lams)
+        return {q: np.array([getattr(s, q) for s in sols]) for q in QUANTITIES}
+
+    def force(lams, taus):
+        return [s.history(t)["force"] for s, t in zip(solve_all(lams), taus)]
+
+    return Method(f"exact {method} rtol={rtol:.0e}", f"exact, solve_ivp {method}", summary, force,
+                  "three analytic phases (u, tau, u), scipy solve_ivp", {"rtol": rtol})
+
+
+def naive_solve(lam, rtol, method="DOP853", dense=False):
+    """Eq. (10) integrated in tau from tau = 0 with a guarded right-hand side and an event at
+    delta = 0 (direction -1): the textbook set-up, kept to show what the phases buy."""
+
+    def f(t, y):
+        d = max(y[0], 0.0)
+        F = d * math.sqrt(d)
+        return [y[1] - lam * F, -F]
+
+    def top(t, y):
+        d = max(y[0], 0.0)
+        return y[1] - lam * d * math.sqrt(d)
+
+    def end(t, y):
+        return y[0]
+
+    top.direction = -1
+    end.terminal, end.direction = True, -1
+    sol = solve_ivp(f, (0.0, 100.0 + 100.0 * lam), [0.0, 1.0], method=method, rtol=rtol,
+                    atol=rtol * 1e-3, events=[top, end], dense_output=dense)
+    if len(sol.t_events[1]) == 0 or len(sol.t_events[0]) == 0:
+        raise RuntimeError(f"naive {method}: no end of contact found at lambda = {lam}")
+    dm = sol.y_events[0][0][0]
+    w = sol.y_events[1][0][1]
+    return {"F_m": dm**1.5, "tau_d": sol.t_events[1][0], "e": -w, "impulse": 1 - w}, sol
+
+
+def _naive(method: str, rtol: float) -> Method:
+    def summary(lams):
+        rows = [naive_solve(x, rtol, method)[0] for x in lams]
+        return {q: np.array([r[q] for r in rows]) for q in QUANTITIES}
+
+    def force(lams, taus):
+        out = []
+        for x, t in zip(lams, taus):
+            s, sol = naive_solve(x, rtol, method, dense=True)
+            d = np.maximum(sol.sol(np.minimum(t, s["tau_d"]))[0], 0.0)
+            out.append(np.where(t < s["tau_d"], d**1.5, 0.0))
+        return out
+
+    return Method(f"naive {method} rtol={rtol:.0e}", f"naive solve_ivp {method}", summary, force,
+                  "tau from 0, max(delta, 0) guard, event delta = 0", {"rtol": rtol})
+
+
+def _registry_model(name: str, **options) -> Method:
+    def summary(lams):
+        import zener_sym as zs
+
+        s = zs.summary(np.asarray(lams, dtype=float), model=name, **options)
+        out = {}
+        for q in QUANTITIES:
+            try:
+                out[q] = np.asarray(getattr(s, q))
+            except FieldUnavailableError:
+                pass
+        return out
+
+    def force(lams, taus):
+        import zener_sym as zs
+
+        lam_col = np.asarray(lams, dtype=float)[:, None]
+        grid = np.array(taus)
+        return list(zs.history(lam_col, grid, model=name, **options).force)
+
+    model = REGISTRY[name]
+    label = name + "".join(f" {k}={v}" for k, v in sorted(options.items()))
+    has_force = "force" in model.history_fields
+    return Method(label, label, summary, force if has_force else None, model.description)
+
+
+def catalogue(quick: bool = False) -> list[Method]:
+    """Every method the benchmark runs; ``quick`` thins the tolerance sweeps."""
+    tols = QUICK_TOLERANCES if quick else TOLERANCES
+    methods = []
+    for m in IVP_METHODS:
+        methods += [_phases(m, t) for t in tols]
+    methods += [_naive("DOP853", t) for t in tols]
+    for name, model in REGISTRY.items():
+        if name.startswith("_"):
+            continue
+        methods.append(_registry_model(name))
+        if "backend" in model.options and name != "exact":
+            methods.append(_registry_model(name, backend="mpmath"))
+    if "exact" in REGISTRY and not quick:
+        methods.append(_registry_model("exact", backend="mpmath", dps=20))
+    return methods

@@ -1,0 +1,62 @@
+"""High-precision reference values for the benchmark.
+
+The reference comes from the exact model's mpmath path (``exact_mp``, 30 digits) when it is
+available, and is cached in ``zener_sym/data/bench_reference.json`` (built by
+``zener-sym bench --build-reference``, checked in tests against a fresh computation). Without the
+cache and without ``exact_mp`` it falls back to the scipy path at rtol 1e-13, which the tests
+cross-check against an independent integration; the source is recorded in the output.
+"""
+from __future__ import annotations
+
+import importlib.util
+import json
+import pathlib
+
+import numpy as np
+
+#: lambda values spanning [0, 2.4] (the HAM models' range), incl. the paper's figure values
+LAMBDAS = (0.0, 0.11, 0.5, 1.01, 1.51, 1.99, 2.4)
+#: points of the force history per lambda, evenly spread over [0, tau_d]
+N_TAU = 101
+QUANTITIES = ("F_m", "tau_d", "e", "impulse")
+
+CACHE = pathlib.Path(__file__).resolve().parent.parent / "data" / "bench_reference.json"
+
+
+def compute(lambdas=LAMBDAS, n_tau=N_TAU, dps=30) -> dict:
+    """Reference summary and force history; mpmath path if present, else scipy at rtol 1e-13."""
+    out = {"lambdas": list(lambdas), "n_tau": n_tau, "summary": {}, "tau": {}, "force": {}}
+    if importlib.util.find_spec("zener_sym.exact_mp") is not None:
+        from .. import exact_mp
+
+        out["source"] = f"zener_sym.exact_mp at dps={dps}"
+        for lam in lambdas:
+            s = exact_mp.solve(lam, dps=dps)
+            tau = [float(s.tau_d) * j / (n_tau - 1) for j in range(n_tau)]
+            h = s.history(np.array(tau))
+            out["summary"][repr(lam)] = {q: float(getattr(s, q)) for q in QUANTITIES}
+            out["tau"][repr(lam)] = tau
+            out["force"][repr(lam)] = [float(x) for x in h["force"]]
+    else:
+        from .. import exact
+
+        out["source"] = "zener_sym.exact (scipy DOP853) at rtol=1e-13"
+        for lam in lambdas:
+            s = exact.solve(lam, rtol=1e-13, atol=1e-16)
+            tau = np.linspace(0.0, s.tau_d, n_tau)
+            out["summary"][repr(lam)] = {q: float(getattr(s, q)) for q in QUANTITIES}
+            out["tau"][repr(lam)] = tau.tolist()
+            out["force"][repr(lam)] = s.history(tau)["force"].tolist()
+    return out
+
+
+def load() -> dict:
+    """The cached reference if present, else computed now."""
+    if CACHE.exists():
+        return json.loads(CACHE.read_text())
+    return compute()
+
+
+def write_cache(ref: dict) -> None:
+    CACHE.parent.mkdir(exist_ok=True)
+    CACHE.write_text(json.dumps(ref, indent=1, sort_keys=True) + "\n")

@@ -1,0 +1,95 @@
+"""Work-precision data: each method's error against the reference and its time per lambda."""
+from __future__ import annotations
+
+import csv
+import pathlib
+
+import numpy as np
+
+from . import reference as ref_mod
+from .timing import timed
+
+CHART_QUANTITIES = ("force_history",) + ref_mod.QUANTITIES
+
+
+def measure(methods, ref: dict, quick: bool = False, log=print) -> list[dict]:
+    """Rows (method, family, quantity, max_rel_error, seconds_per_lambda, status)."""
+    lams = np.array(ref["lambdas"], dtype=float)
+    keys = [repr(float(x)) for x in ref["lambdas"]]
+    taus = [np.array(ref["tau"][k]) for k in keys]
+    rows = []
+    min_total = 0.05 if quick else 0.3
+    for m in methods:
+        if m.summary is not None:
+            try:
+                vals, t = timed(lambda: m.summary(lams), min_repeats=1 if quick else 3,
+                                min_total=min_total)
+                status = "ok"
+            except Exception as exc:  # recorded, charted as a failure
+                vals, t, status = {}, float("nan"), f"{type(exc).__name__}: {exc}"[:200]
+            for q in ref_mod.QUANTITIES:
+                if q not in vals and status == "ok":
+                    continue
+                err = float("nan")
+                if q in vals:
+                    r = np.array([ref["summary"][k][q] for k in keys])
+                    v = np.asarray(vals[q], dtype=float)
+                    err = float(np.max(np.abs(v - r) / np.abs(r))) if np.all(np.isfinite(v)) else np.inf
+                rows.append(dict(method=m.name, family=m.family, quantity=q, max_rel_error=err,
+                                 seconds_per_lambda=t / len(lams), status=status))
+        if m.force is not None:
+            try:
+                fs, t = timed(lambda: m.force(lams, taus), min_repeats=1 if quick else 3,
+                              min_total=min_total)
+                errs = []
+                for k, f in zip(keys, fs):
+                    r = np.array(ref["force"][k])
+                    errs.append(np.max(np.abs(np.asarray(f) - r)) / np.max(r))
+                err, status = float(np.max(errs)), "ok"
+                if not np.isfinite(err):
+                    status = "non-finite values"
+            except Exception as exc:
+                err, t, status = float("nan"), float("nan"), f"{type(exc).__name__}: {exc}"[:200]
+            rows.append(dict(method=m.name, family=m.family, quantity="force_history",
+                             max_rel_error=err, seconds_per_lambda=t / len(lams), status=status))
+        log(f"  {m.name}: done")
+    return rows
+
+
+def write_csv(rows, path: pathlib.Path) -> None:
+    with open(path, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+
+
+def charts(rows, out: pathlib.Path, source: str) -> list[pathlib.Path]:
+    """One log-log chart per quantity: error (x) against time per lambda (y)."""
+    from ._plot import pyplot
+
+    plt = pyplot()
+
+    paths = []
+    for q in CHART_QUANTITIES:
+        fig, ax = plt.subplots(figsize=(8, 5.5))
+        fams = {}
+        for r in rows:
+            if r["quantity"] == q and r["status"] == "ok" and np.isfinite(r["max_rel_error"]):
+                fams.setdefault(r["family"], []).append(r)
+        for i, (fam, rs) in enumerate(sorted(fams.items())):
+            x = [max(r["max_rel_error"], 1e-17) for r in rs]
+            y = [r["seconds_per_lambda"] for r in rs]
+            style = "-o" if len(rs) > 1 else "s"
+            ax.loglog(x, y, style, ms=4, label=fam, color=plt.cm.tab20(i % 20))
+        ax.set_xlabel(f"max relative error over lambda in [0, 2.4] ({'max |F - F_ref| / F_m' if q == 'force_history' else q})")
+        ax.set_ylabel("seconds per lambda (median)")
+        ax.set_title(f"Work-precision: {q}   (reference: {source})", fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, loc="best", ncol=2)
+        fig.tight_layout()
+        p = out / f"work_precision_{q}.png"
+        fig.savefig(p, dpi=110)
+        plt.close(fig)
+        paths.append(p)
+    return paths

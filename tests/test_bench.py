@@ -1,0 +1,42 @@
+"""The benchmark harness (speed is never asserted here; see `zener-sym bench`)."""
+import numpy as np
+import pytest
+
+import zener_sym as zs
+from zener_sym.bench import methods, reference, stability, workprecision
+from zener_sym.models import REGISTRY
+
+
+@pytest.mark.parametrize("name", [n for n in REGISTRY if not n.startswith("_")])
+def test_every_model_fails_loudly_or_not_at_all(name):
+    """Pins the stability map's rule: over lambda in [0, 10] and tau across the contact, a model
+    either answers with finite numbers or raises a ValueError that names the bound; it never
+    returns NaN and never raises anything else."""
+    for lam in np.linspace(0.0, 10.0, 11):
+        tau = np.linspace(0.0, 1.2 * zs.summary(lam, model="exact").tau_d, 25)
+        for call in (lambda: zs.summary(lam, model=name).as_dict(),
+                     lambda: zs.history(lam, tau, model=name).as_dict()):
+            try:
+                out = call()
+            except ValueError as exc:
+                assert "lambda" in str(exc) or "does not give" in str(exc)
+                continue
+            for k, v in out.items():
+                assert np.all(np.isfinite(v)), (name, lam, k)
+
+
+def test_measure_ranks_tolerances():
+    small = {k: v for k, v in reference.compute(lambdas=(0.0, 1.01), n_tau=11).items()}
+    cat = [methods._phases("DOP853", 1e-3), methods._phases("DOP853", 1e-10), methods._naive("DOP853", 1e-8)]
+    rows = workprecision.measure(cat, small, quick=True, log=lambda *a: None)
+    err = {(r["method"], r["quantity"]): r["max_rel_error"] for r in rows}
+    assert all(r["status"] == "ok" for r in rows)
+    assert err[("exact DOP853 rtol=1e-10", "tau_d")] < 1e-8
+    assert err[("exact DOP853 rtol=1e-10", "force_history")] < 1e-7
+    assert err[("exact DOP853 rtol=1e-10", "e")] < err[("exact DOP853 rtol=1e-03", "e")]
+    assert all(r["seconds_per_lambda"] > 0 for r in rows)
+
+
+def test_stability_classes():
+    err = np.array([0.0, 0.005, 0.05, 0.5, np.nan])
+    assert list(stability.classify(err)) == ["ok", "ok", ">1%", ">10%", "nan"]

@@ -86,8 +86,9 @@ def test_identities(lam):
         assert abs(s.xi - (1 - s.e**2)) < 1e-25
 
 
-def test_history_float_matches_mp():
-    s = mp_sol(1.01)
+@pytest.mark.parametrize("lam", [0.0, 1.01, 10.0])
+def test_history_float_matches_mp(lam):
+    s = mp_sol(lam)
     taus = np.concatenate([[0.0, 1e-9, 1e-3], np.linspace(0.01, float(s.tau_d) * 1.2, 60)])
     hf = s.history(taus)
     hm = s.history_mp(list(taus))

@@ -77,8 +77,13 @@ class _Phase:
         if self._flt is None:
             x0 = np.array([float(st.x0) for st in self.steps])
             h = np.array([float(st.h) for st in self.steps])
-            cs = np.array([[[float(ck * st.h**k) for k, ck in enumerate(ci)] for ci in st.c]
-                           for st in self.steps])  # (steps, states, N+1)
+            cs = []
+            for st in self.steps:
+                hp = [mpmath.mpf(1)]
+                for _ in range(len(st.c[0]) - 1):
+                    hp.append(hp[-1] * st.h)
+                cs.append([[float(ck * hk) for ck, hk in zip(ci, hp)] for ci in st.c])
+            cs = np.array(cs)  # (steps, states, N+1): coefficients of σ = s/h in [0, 1]
             self._flt = (x0, h, np.array([float(t) for t in self.t_start]), cs)
         return self._flt
 

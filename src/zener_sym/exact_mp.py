@@ -203,7 +203,7 @@ class MpSolution:
     w_end: object
     int_F2: object
     n_steps: tuple
-    _phases: list
+    _phases: list = field(repr=False)  # the Taylor steps (dense output), too long to print
 
     @property
     def tau_dr(self):

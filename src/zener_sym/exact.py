@@ -30,7 +30,7 @@ from scipy.integrate import solve_ivp
 __all__ = ["ExactSolution", "solve", "LAMBDA_MAX"]
 
 #: Largest lambda the exact model accepts (tau_d is about 2300 at lambda = 100 and 34000 at
-#: 1000; e falls as about 6.8 lambda^-5, below 1e-15 at 1000).
+#: 1000; e falls as about 0.68 lambda^-5, below 1e-15 at 1000).
 LAMBDA_MAX = 1000.0
 
 _V_SWITCH = 0.5  # relative velocity at which loading hands over from u to tau

@@ -40,3 +40,18 @@ def test_measure_ranks_tolerances():
 def test_stability_classes():
     err = np.array([0.0, 0.005, 0.05, 0.5, np.nan])
     assert list(stability.classify(err)) == ["ok", "ok", ">1%", ">10%", "nan"]
+
+
+def test_cached_reference_matches_a_fresh_mpmath_solve():
+    ref = reference.load()
+    assert "exact_mp" in ref["source"]
+    from zener_sym import exact_mp
+
+    lam = 1.01
+    s = exact_mp.solve(lam, dps=30)
+    row = ref["summary"][repr(lam)]
+    for q in reference.QUANTITIES:
+        assert row[q] == pytest.approx(float(getattr(s, q)), rel=1e-14), q
+    tau = np.array(ref["tau"][repr(lam)][::20])
+    np.testing.assert_allclose(s.history(tau)["force"], ref["force"][repr(lam)][::20], rtol=1e-13,
+                               atol=1e-15)

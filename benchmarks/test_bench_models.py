@@ -1,0 +1,82 @@
+"""Benchmark suite (pytest-benchmark), kept apart from the unit tests.
+
+    pip install -e '.[bench]'
+    python -m pytest benchmarks/ --benchmark-only --benchmark-group-by=group
+
+Each group holds the methods a speed target compares, so their ratio is read off one run:
+- "history 200x200": ham1 (numpy) force history on 200 lambda x 200 tau, against a per-lambda
+  scipy DOP853 solve with dense output at rtol 1e-6 (target: ham1 50x faster).
+- "per point": ham1 numpy against ham1 mpmath per point (target: 1000x).
+- "summary 2000": the exact model's summary for 2000 lambda in [0, 5], against a per-lambda
+  scipy DOP853 loop with events at rtol 1e-10 (target: 50x).
+"""
+import numpy as np
+import pytest
+
+import zener_sym as zs
+from zener_sym.bench.methods import naive_solve
+from zener_sym.models import REGISTRY
+
+LAMS = np.linspace(0.0, 2.4, 200)
+S = np.linspace(0.0, 1.0, 200)
+needs_ham1 = pytest.mark.skipif("ham1" not in REGISTRY, reason="ham1 model not registered")
+
+
+def _tau_grid():
+    return zs.summary(LAMS, model="ham0").tau_d[:, None] * 1.6 * S
+
+
+@needs_ham1
+@pytest.mark.benchmark(group="history 200x200")
+def test_ham1_numpy_history(benchmark):
+    tau = _tau_grid()
+    out = benchmark(lambda: zs.history(LAMS[:, None], tau, model="ham1").force)
+    assert out.shape == (200, 200)
+
+
+@needs_ham1
+@pytest.mark.benchmark(group="history 200x200")
+def test_scipy_dop853_loop_history(benchmark):
+    tau = _tau_grid()
+
+    def loop():
+        out = np.empty_like(tau)
+        for i, lam in enumerate(LAMS):
+            summ, sol = naive_solve(lam, 1e-6, "DOP853", dense=True)
+            d = np.maximum(sol.sol(np.minimum(tau[i], summ["tau_d"]))[0], 0.0)
+            out[i] = np.where(tau[i] < summ["tau_d"], d**1.5, 0.0)
+        return out
+
+    out = benchmark.pedantic(loop, rounds=3, iterations=1)
+    assert out.shape == (200, 200)
+
+
+@needs_ham1
+@pytest.mark.benchmark(group="per point")
+def test_ham1_numpy_per_point(benchmark):
+    tau = _tau_grid()
+    benchmark.extra_info["points"] = tau.size
+    benchmark(lambda: zs.history(LAMS[:, None], tau, model="ham1").force)
+
+
+@needs_ham1
+@pytest.mark.benchmark(group="per point")
+def test_ham1_mpmath_per_point(benchmark):
+    pts = np.array([0.3, 1.1, 2.0])
+    benchmark.extra_info["points"] = pts.size
+    benchmark.pedantic(lambda: zs.history(1.01, pts, model="ham1", backend="mpmath").force,
+                       rounds=2, iterations=1)
+
+
+@pytest.mark.benchmark(group="summary 2000")
+def test_exact_summary_2000(benchmark):
+    lams = np.linspace(0.0, 5.0, 2000)
+    s = benchmark(lambda: zs.summary(lams, model="exact"))
+    assert s.e.shape == (2000,)
+
+
+@pytest.mark.benchmark(group="summary 2000")
+def test_scipy_dop853_loop_summary(benchmark):
+    lams = np.linspace(0.0, 5.0, 2000)
+    benchmark.pedantic(lambda: [naive_solve(x, 1e-10, "DOP853") for x in lams], rounds=1,
+                       iterations=1)

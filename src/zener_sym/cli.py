@@ -13,6 +13,8 @@ import sys
 #: Modules (relative to zener_sym) that each contribute one subcommand.
 COMMAND_MODULES = [
     "report",
+    "scene_cmd",
+    "envelopes",
 ]
 
 

@@ -97,3 +97,23 @@ def test_report_has_scene_section():
     assert "scene" in names
     md = dict(report.SECTIONS)["scene"]()
     assert "0.162982" in md  # lambda of the Table 1 pair, R 0.9 mm, H 0.5 mm, 1 m/s
+
+
+def test_model_without_some_fields(monkeypatch):
+    from zener_sym.models import REGISTRY
+
+    from _fake_models import Perturbed
+
+    partial = Perturbed("partial", 0.0)
+    partial.summary_fields = ("lam", "tau_d", "delta_m", "F_m")
+    orig = partial._summary
+    partial._summary = lambda lam, **o: {k: v for k, v in orig(lam).items()
+                                         if k in partial.summary_fields}
+    monkeypatch.setitem(REGISTRY, "partial", partial)
+    sc = zs.Scene("steel", "glass", 1e-3, 2e-3, 1.0)
+    with pytest.warns(zs.ZenerWarning, match="not-checked"):
+        r = zs.summary(sc, model="partial")
+    ex = zs.summary(sc, model="exact")
+    assert r.restitution is None and r.energy_loss is None and r.final_deflection is None
+    assert r.contact_duration == pytest.approx(ex.contact_duration, rel=1e-15)
+    assert "n/a (not given by model 'partial')" in str(r)

@@ -111,7 +111,7 @@ def _cost(model, lams, repeats) -> float:
     return float(np.median(times)) if times else math.inf
 
 
-def build(models=None, intervals=INTERVALS, points_per_interval: int = 3, repeats: int = 3,
+def build(models=None, intervals=INTERVALS, points_per_interval: int = 4, repeats: int = 3,
           cost_lams=(0.1, 0.8, 1.6)) -> dict:
     """Measure the envelope table for ``models`` (default: every registered model).
 

@@ -176,16 +176,26 @@ class Scene:
             reason = f"model {model!r} requested"
         s = _summary(self.lam, model=model, **options)
         T, L = self.T, self.length_scale
+        # A model that cannot give a quantity leaves it None (shown as n/a); asking the
+        # dimensionless summary for it raises FieldUnavailableError naming field and model.
+        have = set(s.fields)
+        get = lambda f, scale=1.0: scale * getattr(s, f) if f in have else None  # noqa: E731
         res = SceneResult(
             scene=self, model=model, reason=reason, lam=self.lam,
-            contact_duration=T * s.tau_d, max_force=self.force_scale * s.F_m,
-            max_compression=L * s.delta_m, restitution=s.e, energy_loss=s.xi,
-            rebound_velocity=s.e * self.v0,
-            final_deflection=self.alpha * self.m_star * self.v0 * s.impulse,
+            contact_duration=get("tau_d", T), max_force=get("F_m", self.force_scale),
+            max_compression=get("delta_m", L), restitution=get("e"), energy_loss=get("xi"),
+            rebound_velocity=get("e", self.v0),
+            final_deflection=get("impulse", self.alpha * self.m_star * self.v0),
             options=dict(options),
         )
-        found = checks.static_checks(self) + checks.dynamic_checks(
-            self, res.contact_duration, res.max_compression, res.max_force, s.impulse)
+        found = checks.static_checks(self)
+        if None in (res.contact_duration, res.max_compression, res.max_force,
+                    res.final_deflection):
+            found.append(("not-checked", f"model {model!r} does not give every quantity the "
+                          "plate and yield checks need; they were skipped"))
+        else:
+            found += checks.dynamic_checks(self, res.contact_duration, res.max_compression,
+                                           res.max_force, s.impulse)
         res.warnings = found
         if warn:
             for code, msg in found:
@@ -195,19 +205,23 @@ class Scene:
 
 @dataclass
 class SceneResult:
-    """Dimensional results of one scene with one model (SI units; see ``SCENE_FIELDS``)."""
+    """Dimensional results of one scene with one model (SI units; see ``SCENE_FIELDS``).
+
+    A field the model cannot give is None (a model chosen by ``select_model`` with quantity
+    "all" gives them all). ``warnings`` lists the validity checks as (code, message) pairs.
+    """
 
     scene: Scene
     model: str
     reason: str
     lam: float
-    contact_duration: float
-    max_force: float
-    max_compression: float
-    restitution: float
-    energy_loss: float
-    rebound_velocity: float
-    final_deflection: float
+    contact_duration: float | None
+    max_force: float | None
+    max_compression: float | None
+    restitution: float | None
+    energy_loss: float | None
+    rebound_velocity: float | None
+    final_deflection: float | None
     options: dict = field(default_factory=dict)
     warnings: list = field(default_factory=list)
 
@@ -264,7 +278,9 @@ class SceneResult:
             ("why this model", self.reason, ""),
         ]
         for name, unit, desc in SCENE_FIELDS:
-            rows.append((desc, f"{getattr(self, name):.6g}", unit))
+            v = getattr(self, name)
+            rows.append((desc, f"n/a (not given by model {self.model!r})" if v is None
+                         else f"{v:.6g}", unit if v is not None else ""))
         for code, msg in self.warnings:
             rows.append((f"WARNING {code}", msg, ""))
         return rows

@@ -13,7 +13,6 @@ w is positive in the direction of the impact. Scaling: see ``zener_sym.scaling``
 """
 from __future__ import annotations
 
-import math
 import warnings
 from dataclasses import dataclass, field
 

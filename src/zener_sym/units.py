@@ -5,7 +5,6 @@ A bare number is taken in SI units. Only the units listed in ``UNITS`` are accep
 """
 from __future__ import annotations
 
-import math
 import re
 
 __all__ = ["UNITS", "parse_quantity"]
@@ -54,15 +53,13 @@ def parse_quantity(text, kind: str, field: str | None = None) -> float:
     if not unit:
         return value
     table = UNITS[kind]
-    # Units are case-sensitive except for the trailing spelling of prefixes users mix up (gpa).
     factor = table.get(unit)
     if factor is None:
-        lowered = {k.lower(): v for k, v in table.items() if k.lower() not in ("mm", "m")}
-        factor = lowered.get(unit.lower())
+        # "gpa", "MM": accept a different case only when it matches exactly one unit
+        hits = [v for k, v in table.items() if k.lower() == unit.lower()]
+        factor = hits[0] if len(hits) == 1 else None
     if factor is None:
         raise ValueError(f"{name}: unknown {kind} unit {unit!r} in {text!r}; allowed: "
                          f"{', '.join(table)}")
-    out = value * factor
-    if math.isnan(value):
-        return value  # the scene's validation names the field and the allowed range
-    return out
+    # NaN and infinities pass through: the scene's validation names the field and its range
+    return value * factor

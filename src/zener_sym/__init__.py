@@ -8,6 +8,11 @@ and numeric kernels generated from that derivation.
 """
 from .api import History, Summary, history, summary
 from .models import REGISTRY, FieldUnavailableError
+from .checks import ZenerWarning
+from .materials import (ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TABLE1_SPHERE,
+                        Material)
+from .scene import Scene, SceneResult
+from .select import Selection, select_model
 
 __version__ = "0.1.0"
 
@@ -19,4 +24,6 @@ def __getattr__(name):
     raise AttributeError(f"module 'zener_sym' has no attribute {name!r}")
 
 
-__all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError"]
+__all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError",
+           "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
+           "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS"]

@@ -80,27 +80,38 @@ def _validated(model_name, lam):
     return model, arr
 
 
-def summary(lam, model: str = "exact", **options) -> Summary:
-    """Summary quantities of the impact for inelasticity parameter(s) ``lam``.
+def summary(lam, model: str | None = None, **options):
+    """Summary quantities of the impact for inelasticity parameter(s) ``lam``, or for a scene.
 
     Parameters
     ----------
-    lam : float or array_like
+    lam : float or array_like or Scene
         Zener's inelasticity parameter lambda >= 0 (Eq. 11). An array gives array fields.
+        A ``zener_sym.Scene`` gives its dimensional ``SceneResult`` instead; then ``rtol``
+        (default 1e-3) and ``quantity`` (default "all") choose the cheapest model meeting the
+        accuracy (``select_model``) unless ``model`` is given.
     model : str
-        One of ``zener_sym.MODELS``.
+        One of ``zener_sym.MODELS`` (default "exact" for a lambda).
     **options
         Model options, e.g. ``rtol`` or ``backend="mpmath", dps=40`` for ``exact``.
 
     Returns
     -------
-    Summary
+    Summary or SceneResult
 
     Raises
     ------
     ValueError
         For a bad lambda, an unknown model or option, or lambda outside the model's validity.
     """
+    from .scene import Scene
+
+    if isinstance(lam, Scene):
+        rtol = options.pop("rtol", 1e-3)
+        quantity = options.pop("quantity", "all")
+        return lam.result(model=model, rtol=rtol, quantity=quantity, **options)
+    if model is None:
+        model = "exact"
     m, arr = _validated(model, lam)
     m.check_options(options)
     flat = arr.reshape(-1)

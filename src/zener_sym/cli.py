@@ -15,6 +15,8 @@ COMMAND_MODULES = [
     "report",
     "generate_cmd",
     "bench.cmd",
+    "scene_cmd",
+    "envelopes",
 ]
 
 

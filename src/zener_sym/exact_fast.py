@@ -1,0 +1,134 @@
+"""Fast exact solution of Eq. (10): Chebyshev tables in lambda (and time), evaluated with numpy.
+
+The tables (``generated/exact_table.py``, built offline by :mod:`zener_sym.exact_table_build` from
+the scipy solver at rtol 1e-13) cover ``LAM_MIN <= lambda <= LAM_MAX``. They are never
+extrapolated: :func:`in_range` tells the caller which lambda must be integrated instead.
+
+Measured error bounds (against the scipy solver at rtol 1e-13 on a dense lambda grid between the
+nodes; see the README section and ``tests/test_exact_fast.py``): ``SUMMARY_RTOL`` relative on every
+summary field, ``HISTORY_ATOL`` on delta/delta_m, force/F_m, impulse and velocity.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .generated import exact_table as _t
+
+__all__ = ["LAM_MIN", "LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range", "summary", "history"]
+
+LAM_MIN = float(_t.LAM_PIECES[0])
+LAM_MAX = float(_t.LAM_PIECES[-1])
+#: Documented (and tested) relative error bound of every summary field.
+SUMMARY_RTOL = 1e-10
+#: Documented (and tested) error bound of the history, relative to each field's scale.
+HISTORY_ATOL = 1e-9
+
+_EDGES = np.asarray(_t.LAM_PIECES, dtype=float)
+_SUM = {k: [np.asarray(c, dtype=float) for c in v] for k, v in _t.SUMMARY.items()}
+_HIST = {k: [np.asarray(c, dtype=float) for c in v] for k, v in _t.HISTORY.items()}
+
+
+def in_range(lam) -> np.ndarray:
+    """Boolean mask: lambda inside the table's validated range [LAM_MIN, LAM_MAX]."""
+    lam = np.asarray(lam, dtype=float)
+    return (lam >= LAM_MIN) & (lam <= LAM_MAX)
+
+
+def _piece(lam: np.ndarray):
+    """Lambda piece index and the local Chebyshev variable x in [-1, 1]."""
+    if not np.all(in_range(lam)):
+        bad = lam[~in_range(lam)].ravel()[0]
+        raise ValueError(f"lambda = {bad!r} is outside the exact table's range "
+                         f"[{LAM_MIN:g}, {LAM_MAX:g}]; integrate instead (backend='scipy')")
+    i = np.clip(np.searchsorted(_EDGES, lam, side="right") - 1, 0, len(_EDGES) - 2)
+    a, b = _EDGES[i], _EDGES[i + 1]
+    return i, np.clip((2.0 * lam - a - b) / (b - a), -1.0, 1.0)
+
+
+def _cheb1(key: str, i: np.ndarray, x: np.ndarray) -> np.ndarray:
+    out = np.empty(x.shape)
+    for p in np.unique(i):
+        m = i == p
+        out[m] = np.polynomial.chebyshev.chebval(x[m], _SUM[key][p])
+    return out
+
+
+def _core(lam: np.ndarray) -> dict:
+    i, x = _piece(lam)
+    v = {k: _cheb1(k, i, x) for k in _SUM}
+    v["tau_d"] = np.exp(v["log_tau_d"])
+    v["e"] = np.exp(v["log_e"])
+    v["tau_w0"] = v["tau_dc"] + lam * v["rest_over_lam"]
+    return v, i, x
+
+
+def summary(lam) -> dict:
+    """Every summary field (see ``models.SUMMARY_FIELDS``) for lambda in the table's range.
+
+    xi comes from the energy balance xi = 2 lambda int_F2 (exact for Eq. 10), which keeps its
+    relative accuracy as lambda -> 0, where 1 - e^2 would cancel.
+    """
+    lam = np.asarray(lam, dtype=float)
+    v, _, _ = _core(lam)
+    tau_dr = v["tau_d"] - v["tau_dc"]
+    return {"lam": lam, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
+            "tau_dr": tau_dr, "eta": tau_dr / v["tau_dc"], "e": v["e"],
+            "F_m": v["delta_m"] ** 1.5, "impulse": 1.0 + v["e"], "int_F2": v["int_F2"],
+            "xi": 2.0 * lam * v["int_F2"]}
+
+
+def _cheb2(coef: np.ndarray, xt: np.ndarray, xl: np.ndarray) -> np.ndarray:
+    """sum_jk coef[j, k] T_j(xt) T_k(xl), pointwise."""
+    vt = np.polynomial.chebyshev.chebvander(xt, coef.shape[0] - 1)
+    vl = np.polynomial.chebyshev.chebvander(xl, coef.shape[1] - 1)
+    return np.einsum("nj,nj->n", vt @ coef, vl)
+
+
+def history(lam, tau) -> dict:
+    """delta, impulse, velocity (1 - I) and force (delta^{3/2}) at (lam, tau), same shapes.
+
+    lam and tau must already be broadcast to one shape; lambda within the table's range, tau >= 0.
+    """
+    lam = np.asarray(lam, dtype=float)
+    tau = np.asarray(tau, dtype=float)
+    shape = tau.shape
+    lam, tau = lam.ravel(), tau.ravel()
+    v, ip, xl = _core(lam)
+    tau_dc, tau_w0, tau_d = v["tau_dc"], v["tau_w0"], v["tau_d"]
+    delta = np.zeros(tau.shape)
+    imp = 1.0 + v["e"]  # after the contact the impulse keeps its final value
+    imp = imp.copy()
+    piece = np.full(tau.shape, -1)
+    piece[tau <= tau_dc] = 0
+    piece[(tau > tau_dc) & (tau < tau_w0)] = 1
+    piece[(tau >= tau_w0) & (tau < tau_d)] = 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for n, name in enumerate(("C", "A", "B")):
+            m = piece == n
+            if not m.any():
+                continue
+            t = tau[m]
+            if name == "C":
+                y = np.sqrt(t / tau_dc[m])
+            elif name == "A":
+                beta = np.log1p((tau_w0[m] - tau_dc[m]) / _t.C_STRETCH)
+                y = np.log1p((t - tau_dc[m]) / _t.C_STRETCH) / beta
+            else:
+                y = np.sqrt((tau_d[m] - t) / (tau_d[m] - tau_w0[m]))
+            xt = np.clip(2.0 * y - 1.0, -1.0, 1.0)
+            f = np.empty(t.shape)
+            ii = np.empty(t.shape)
+            for p in np.unique(ip[m]):
+                q = ip[m] == p
+                f[q] = _cheb2(_HIST[(name, "f")][p], xt[q], xl[m][q])
+                ii[q] = _cheb2(_HIST[(name, "I")][p], xt[q], xl[m][q])
+            if name == "C":
+                delta[m] = t * np.exp(f)
+            elif name == "A":
+                delta[m] = np.exp(f)
+            else:
+                delta[m] = (tau_d[m] - t) * np.exp(f)
+            imp[m] = ii
+    delta = delta.reshape(shape)
+    imp = imp.reshape(shape)
+    return {"delta": delta, "impulse": imp, "velocity": 1.0 - imp, "force": delta**1.5}

@@ -37,7 +37,7 @@ def in_range(lam) -> np.ndarray:
 def _piece(lam: np.ndarray):
     """Lambda piece index and the local Chebyshev variable x in [-1, 1]."""
     if not np.all(in_range(lam)):
-        bad = lam[~in_range(lam)].ravel()[0]
+        bad = float(lam[~in_range(lam)].ravel()[0])
         raise ValueError(f"lambda = {bad!r} is outside the exact table's range "
                          f"[{LAM_MIN:g}, {LAM_MAX:g}]; integrate instead (backend='scipy')")
     i = np.clip(np.searchsorted(_EDGES, lam, side="right") - 1, 0, len(_EDGES) - 2)

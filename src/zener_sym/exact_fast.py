@@ -25,7 +25,18 @@ HISTORY_ATOL = 1e-9
 
 _EDGES = np.asarray(_t.LAM_PIECES, dtype=float)
 _SUM = {k: [np.asarray(c, dtype=float) for c in v] for k, v in _t.SUMMARY.items()}
-_HIST = {k: [np.asarray(c, dtype=float) for c in v] for k, v in _t.HISTORY.items()}
+
+
+def _stack(mats) -> np.ndarray:
+    """One zero-padded array [lambda piece, time degree, lambda degree] (trimming varies)."""
+    mats = [np.asarray(c, dtype=float) for c in mats]
+    out = np.zeros((len(mats), max(c.shape[0] for c in mats), max(c.shape[1] for c in mats)))
+    for i, c in enumerate(mats):
+        out[i, : c.shape[0], : c.shape[1]] = c
+    return out
+
+
+_HIST = {k: _stack(v) for k, v in _t.HISTORY.items()}
 
 
 def in_range(lam) -> np.ndarray:
@@ -77,58 +88,58 @@ def summary(lam) -> dict:
             "xi": 2.0 * lam * v["int_F2"]}
 
 
-def _cheb2(coef: np.ndarray, xt: np.ndarray, xl: np.ndarray) -> np.ndarray:
-    """sum_jk coef[j, k] T_j(xt) T_k(xl), pointwise."""
-    vt = np.polynomial.chebyshev.chebvander(xt, coef.shape[0] - 1)
-    vl = np.polynomial.chebyshev.chebvander(xl, coef.shape[1] - 1)
-    return np.einsum("nj,nj->n", vt @ coef, vl)
+def _time_coefficients(key, ip: np.ndarray, xl: np.ndarray) -> np.ndarray:
+    """Chebyshev coefficients in time, one row per lambda: sum_k C[j, k] T_k(x_lambda).
+
+    Plain broadcasting, no BLAS: the sizes are small and a threaded matmul only adds overhead.
+    """
+    c = _HIST[key]
+    tl = np.polynomial.chebyshev.chebvander(xl, c.shape[2] - 1)  # [lambda, k]
+    return np.einsum("lk,ljk->lj", tl, c[ip], optimize=False)
 
 
 def history(lam, tau) -> dict:
     """delta, impulse, velocity (1 - I) and force (delta^{3/2}) at (lam, tau), same shapes.
 
     lam and tau must already be broadcast to one shape; lambda within the table's range, tau >= 0.
+    The lambda direction is contracted once per distinct lambda, then each time point costs one
+    Chebyshev series in time.
     """
     lam = np.asarray(lam, dtype=float)
     tau = np.asarray(tau, dtype=float)
     shape = tau.shape
-    lam, tau = lam.ravel(), tau.ravel()
-    v, ip, xl = _core(lam)
-    tau_dc, tau_w0, tau_d = v["tau_dc"], v["tau_w0"], v["tau_d"]
+    lu, inv = np.unique(lam.ravel(), return_inverse=True)
+    tau = tau.ravel()
+    v, ip, xl = _core(lu)
+    tau_dc, tau_w0, tau_d = v["tau_dc"][inv], v["tau_w0"][inv], v["tau_d"][inv]
     delta = np.zeros(tau.shape)
-    imp = 1.0 + v["e"]  # after the contact the impulse keeps its final value
-    imp = imp.copy()
+    imp = (1.0 + v["e"])[inv]  # after the contact the impulse keeps its final value
     piece = np.full(tau.shape, -1)
     piece[tau <= tau_dc] = 0
     piece[(tau > tau_dc) & (tau < tau_w0)] = 1
     piece[(tau >= tau_w0) & (tau < tau_d)] = 2
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for n, name in enumerate(("C", "A", "B")):
-            m = piece == n
-            if not m.any():
-                continue
-            t = tau[m]
-            if name == "C":
-                y = np.sqrt(t / tau_dc[m])
-            elif name == "A":
-                beta = np.log1p((tau_w0[m] - tau_dc[m]) / _t.C_STRETCH)
-                y = np.log1p((t - tau_dc[m]) / _t.C_STRETCH) / beta
-            else:
-                y = np.sqrt((tau_d[m] - t) / (tau_d[m] - tau_w0[m]))
-            xt = np.clip(2.0 * y - 1.0, -1.0, 1.0)
-            f = np.empty(t.shape)
-            ii = np.empty(t.shape)
-            for p in np.unique(ip[m]):
-                q = ip[m] == p
-                f[q] = _cheb2(_HIST[(name, "f")][p], xt[q], xl[m][q])
-                ii[q] = _cheb2(_HIST[(name, "I")][p], xt[q], xl[m][q])
-            if name == "C":
-                delta[m] = t * np.exp(f)
-            elif name == "A":
-                delta[m] = np.exp(f)
-            else:
-                delta[m] = (tau_d[m] - t) * np.exp(f)
-            imp[m] = ii
+    for n, name in enumerate(("C", "A", "B")):
+        m = piece == n
+        if not m.any():
+            continue
+        t, dc, w0, d = tau[m], tau_dc[m], tau_w0[m], tau_d[m]
+        if name == "C":
+            y = np.sqrt(t / dc)
+        elif name == "A":  # only reached when tau_w0 > tau_dc, so beta > 0
+            y = np.log1p((t - dc) / _t.C_STRETCH) / np.log1p((w0 - dc) / _t.C_STRETCH)
+        else:
+            y = np.sqrt((d - t) / (d - w0))
+        xt = np.clip(2.0 * y - 1.0, -1.0, 1.0)
+        vt = np.polynomial.chebyshev.chebvander(xt, _HIST[(name, "f")].shape[1] - 1)
+        f = np.einsum("nj,nj->n", vt, _time_coefficients((name, "f"), ip, xl)[inv[m]])
+        vt = vt[:, : _HIST[(name, "I")].shape[1]]
+        imp[m] = np.einsum("nj,nj->n", vt, _time_coefficients((name, "I"), ip, xl)[inv[m]])
+        if name == "C":
+            delta[m] = t * np.exp(f)
+        elif name == "A":
+            delta[m] = np.exp(f)
+        else:
+            delta[m] = (d - t) * np.exp(f)
     delta = delta.reshape(shape)
     imp = imp.reshape(shape)
     return {"delta": delta, "impulse": imp, "velocity": 1.0 - imp, "force": delta**1.5}

@@ -150,3 +150,22 @@ def test_table_rebuild_agrees_numerically():
     from zener_sym import exact_table_cmd
 
     assert exact_table_cmd.run(check=True) == 0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("lam", [0.0123, 1.7771, 4.6543])
+def test_against_mpmath_reference(lam):
+    """Every summary field within the documented bound of the mpmath Taylor integrator (dps 20),
+    and the history within its bound of the reference's own history."""
+    from zener_sym import exact_mp
+
+    r = exact_mp.solve(lam, dps=20)
+    s = zs.summary(lam, model="exact", backend="table")
+    for f in FIELDS + ("xi",):
+        assert float(getattr(s, f)) == pytest.approx(float(getattr(r, f)),
+                                                     rel=exact_fast.SUMMARY_RTOL, abs=0), f
+    tau = np.linspace(0, 1.02 * float(r.tau_d), 300)
+    g = r.history(tau)
+    h = zs.history(lam, tau, model="exact", backend="table")
+    assert np.abs(h.delta - g["delta"]).max() <= exact_fast.HISTORY_ATOL * float(r.delta_m)
+    assert np.abs(h.impulse - g["impulse"]).max() <= exact_fast.HISTORY_ATOL

@@ -169,3 +169,19 @@ def test_against_mpmath_reference(lam):
     h = zs.history(lam, tau, model="exact", backend="table")
     assert np.abs(h.delta - g["delta"]).max() <= exact_fast.HISTORY_ATOL * float(r.delta_m)
     assert np.abs(h.impulse - g["impulse"]).max() <= exact_fast.HISTORY_ATOL
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(lam=st.floats(0.0, 5.0), frac=st.lists(st.floats(0.0, 1.1), min_size=2, max_size=30))
+def test_history_is_physical(lam, frac):
+    """delta >= 0, the impulse never decreases (dI/dtau = F >= 0) and ends at 1 + e."""
+    s = zs.summary(lam, model="exact")
+    tau = np.sort(np.array(frac)) * s.tau_d
+    h = zs.history(lam, tau, model="exact")
+    assert np.all(h.delta >= 0)
+    assert np.all(np.diff(h.impulse) >= -1e-12)
+    assert np.all(h.impulse <= 1 + s.e + 1e-12)
+    assert np.all(h.delta[tau >= s.tau_d] == 0)

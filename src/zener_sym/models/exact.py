@@ -27,7 +27,8 @@ BACKENDS = ("auto", "table", "scipy", "mpmath")
 
 class ExactModel(Model):
     name = "exact"
-    description = "direct integration of Zener's equation (10) to the end of contact"
+    description = ("Zener's equation (10) solved exactly: Chebyshev tables for 0 <= lambda <= 5, "
+                   "direct integration otherwise")
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m",
                       "impulse", "int_F2", "xi")
     history_fields = ("delta", "velocity", "force", "impulse")

@@ -42,6 +42,14 @@ def _stack(mats) -> np.ndarray:
     return out
 
 
+def _pad_rows(rows) -> np.ndarray:
+    """Zero-padded 2-D array from 1-D coefficient tuples of different lengths."""
+    out = np.zeros((len(rows), max(len(r) for r in rows)))
+    for i, r in enumerate(rows):
+        out[i, : len(r)] = r
+    return out
+
+
 @functools.cache
 def _tables():
     """The generated table, loaded on first use (parsing it costs ~0.1 s without a .pyc)."""
@@ -50,7 +58,10 @@ def _tables():
         raise RuntimeError("generated/exact_table.py does not match exact_table_build (stale "
                            "table): run `zener-sym exact-table`")
     return {"edges": np.asarray(t.LAM_PIECES, dtype=float), "c": float(t.C_STRETCH),
-            "summary": {k: [np.asarray(c, dtype=float) for c in v] for k, v in t.SUMMARY.items()},
+            "summary_keys": tuple(t.SUMMARY),
+            # [lambda piece, field, degree], zero-padded: all fields in one pass
+            "summary": _stack([_pad_rows([v[p] for v in t.SUMMARY.values()])
+                               for p in range(len(t.LAM_PIECES) - 1)]),
             "history": {k: _stack(v) for k, v in t.HISTORY.items()}}
 
 
@@ -72,17 +83,13 @@ def _piece(lam: np.ndarray):
     return i, np.clip((2.0 * lam - a - b) / (b - a), -1.0, 1.0)
 
 
-def _cheb1(key: str, i: np.ndarray, x: np.ndarray) -> np.ndarray:
-    out = np.empty(x.shape)
-    for p in np.unique(i):
-        m = i == p
-        out[m] = np.polynomial.chebyshev.chebval(x[m], _tables()["summary"][key][p])
-    return out
-
-
 def _core(lam: np.ndarray) -> dict:
     i, x = _piece(lam)
-    v = {k: _cheb1(k, i, x) for k in _tables()["summary"]}
+    t = _tables()
+    c = t["summary"]
+    tl = np.polynomial.chebyshev.chebvander(x, c.shape[2] - 1)  # [lambda, degree]
+    vals = np.einsum("nk,nfk->nf", tl, c[i], optimize=False)
+    v = dict(zip(t["summary_keys"], vals.T))
     v["tau_d"] = np.exp(v["log_tau_d"])
     v["e"] = np.exp(v["log_e"])
     v["tau_w0"] = v["tau_dc"] + lam * v["rest_over_lam"]

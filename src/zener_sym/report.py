@@ -35,10 +35,16 @@ def exact_section() -> str:
     )
 
 
+def _exact_fast_section() -> str:
+    from .exact_fast_report import section  # imported late: it imports this module
+
+    return section()
+
+
 #: (title, callable returning markdown). Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
-    ("exact-fast", lambda: __import__("zener_sym.exact_fast_report").exact_fast_report.section()),
+    ("exact-fast", _exact_fast_section),
 ]
 
 

@@ -17,6 +17,7 @@ COMMAND_MODULES = [
     "bench.cmd",
     "scene_cmd",
     "envelopes",
+    "exact_table_cmd",
 ]
 
 

@@ -24,7 +24,7 @@ def exact_section() -> str:
     from .models import SUMMARY_FIELDS
 
     t0 = time.perf_counter()
-    s = summary(np.array(PAPER_LAMBDAS), model="exact")
+    s = summary(np.array(PAPER_LAMBDAS), model="exact", backend="scipy")
     dt = time.perf_counter() - t0
     rows = [[fmt(getattr(s, f)[i]) for f in SUMMARY_FIELDS] for i in range(len(PAPER_LAMBDAS))]
     return (
@@ -51,12 +51,17 @@ def scene_section() -> str:
         "meeting rtol = 1e-3\n(`zener-sym scene --sphere table1-sphere --plate table1-plate "
         "--radius 0.9mm --thickness 0.5mm --v0 1m/s`).\n\n" + res.to_markdown()
     )
+def _exact_fast_section() -> str:
+    from .exact_fast_report import section  # imported late: it imports this module
+
+    return section()
 
 
 #: (title, callable returning markdown). Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
     ("scene", scene_section),
+    ("exact-fast", _exact_fast_section),
 ]
 
 

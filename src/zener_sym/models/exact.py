@@ -1,15 +1,34 @@
-"""The exact model: direct integration of Eq. (10) (scipy), or at high precision (mpmath)."""
+"""The exact model: Chebyshev tables (fast, default in range), direct integration (scipy) or
+high precision (mpmath).
+
+``backend``:
+
+``"auto"`` (default)
+    lambda in the table's range [0, 5] (``exact_fast.LAM_MIN``, ``LAM_MAX``) is evaluated from the
+    tables (error bounds ``exact_fast.SUMMARY_RTOL``, ``HISTORY_ATOL``); any other lambda is
+    integrated with scipy. Giving ``rtol`` or ``method`` (integrator options) integrates all.
+``"table"``
+    tables only; lambda outside their range is a ValueError (never extrapolated).
+``"scipy"``
+    direct integration for every lambda (``rtol``, ``method`` as in ``exact.solve``).
+``"mpmath"``
+    high-precision integration (``dps``).
+"""
 from __future__ import annotations
 
 import numpy as np
 
 from .. import exact as _exact
+from .. import exact_fast as _fast
 from .base import Model, register
+
+BACKENDS = ("auto", "table", "scipy", "mpmath")
 
 
 class ExactModel(Model):
     name = "exact"
-    description = "direct integration of Zener's equation (10) to the end of contact"
+    description = ("Zener's equation (10) solved exactly: Chebyshev tables for 0 <= lambda <= 5, "
+                   "direct integration otherwise")
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m",
                       "impulse", "int_F2", "xi")
     history_fields = ("delta", "velocity", "force", "impulse")
@@ -17,38 +36,72 @@ class ExactModel(Model):
     bound_reason = "the range over which the integrator is tested"
     options = ("rtol", "method", "backend", "dps")
 
-    def _solutions(self, lam_values, **options):
-        backend = options.pop("backend", "scipy")
+    def _split(self, lam, options):
+        """Mask of lambda to take from the tables, and the options left for integration."""
+        options = dict(options)
+        backend = options.pop("backend", "auto")
+        if backend not in BACKENDS:
+            raise ValueError(f"unknown backend {backend!r} for model 'exact'; allowed: "
+                             f"{', '.join(BACKENDS)}")
+        if backend == "table":
+            if options:
+                raise ValueError(f"option {sorted(options)[0]!r} does not go with backend='table'")
+            if not np.all(_fast.in_range(lam)):
+                bad = float(lam[~_fast.in_range(lam)].ravel()[0])
+                raise ValueError(
+                    f"lambda = {bad!r} is outside the exact table's range [{_fast.LAM_MIN:g}, "
+                    f"{_fast.LAM_MAX:g}]; use backend='auto' (integrates outside) or 'scipy'")
+            return np.ones(lam.shape, bool), None
+        if backend == "auto":
+            if options.keys() & {"rtol", "method"}:
+                backend = "scipy"  # an integrator tolerance was asked for: integrate everything
+            else:
+                if "dps" in options:
+                    raise ValueError("option 'dps' goes with backend='mpmath'")
+                return _fast.in_range(lam), ("scipy", options)
+        return np.zeros(lam.shape, bool), (backend, options)
+
+    def _solutions(self, lam_values, backend, options):
         if backend == "scipy":
             if "dps" in options:
                 raise ValueError("option 'dps' goes with backend='mpmath'")
             return {float(x): _exact.solve(x, **options) for x in np.unique(lam_values)}
-        if backend == "mpmath":
-            from .. import exact_mp
+        from .. import exact_mp
 
-            bad = set(options) - {"dps"}
-            if bad:
-                raise ValueError(f"option {sorted(bad)[0]!r} does not go with backend='mpmath'")
-            return {float(x): exact_mp.solve(x, **options) for x in np.unique(lam_values)}
-        raise ValueError(f"unknown backend {backend!r} for model 'exact'; allowed: scipy, mpmath")
+        bad = set(options) - {"dps"}
+        if bad:
+            raise ValueError(f"option {sorted(bad)[0]!r} does not go with backend='mpmath'")
+        return {float(x): exact_mp.solve(x, **options) for x in np.unique(lam_values)}
 
     def _summary(self, lam, **options):
-        sols = self._solutions(lam, **options)
+        fast, rest = self._split(lam, options)
         out = {f: np.empty(lam.shape) for f in self.summary_fields}
-        for i, x in np.ndenumerate(lam):
-            s = sols[float(x)]
+        if fast.any():
+            v = _fast.summary(lam[fast])
             for f in self.summary_fields:
-                out[f][i] = float(getattr(s, f))
+                out[f][fast] = v[f]
+        if not fast.all():
+            sols = self._solutions(lam[~fast], *rest)
+            for i in zip(*np.nonzero(~fast)):
+                s = sols[float(lam[i])]
+                for f in self.summary_fields:
+                    out[f][i] = float(getattr(s, f))
         return out
 
     def _history(self, lam, tau, **options):
-        sols = self._solutions(lam, **options)
+        fast, rest = self._split(lam, options)
         out = {f: np.empty(tau.shape) for f in self.history_fields}
-        for x, s in sols.items():
-            mask = lam == x
-            h = s.history(tau[mask])
+        if fast.any():
+            v = _fast.history(lam[fast], tau[fast])
             for f in self.history_fields:
-                out[f][mask] = np.asarray(h[f], dtype=float)
+                out[f][fast] = v[f]
+        if not fast.all():
+            sols = self._solutions(lam[~fast], *rest)
+            for x, s in sols.items():
+                mask = (lam == x) & ~fast
+                h = s.history(tau[mask])
+                for f in self.history_fields:
+                    out[f][mask] = np.asarray(h[f], dtype=float)
         return out
 
 

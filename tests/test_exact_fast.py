@@ -1,0 +1,189 @@
+"""The fast (table) path of the exact model against independent references.
+
+References: the scipy integrator at rtol 1e-13 at lambda values that are NOT table nodes
+(random points, piece edges, midpoints between nodes), Hertz's closed forms at lambda = 0, and the
+exact identities I(tau_d) = 1 + e and xi = 1 - e^2 = 2 lambda int F^2 (energy balance).
+"""
+import numpy as np
+import pytest
+
+import zener_sym as zs
+from zener_sym import exact, exact_fast
+from zener_sym import exact_table_build as build
+from zener_sym.generated import exact_table
+
+FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2")
+
+
+def _between_nodes():
+    """Midpoints between consecutive lambda nodes of every piece, plus edges and random points."""
+    x = np.sort(build.cheb_nodes(build.N_LAM))
+    mids = (x[:-1] + x[1:]) / 2
+    pts = [0.0, 1e-9, 5.0, 5.0 - 1e-9]
+    for a, b in zip(build.LAM_PIECES[:-1], build.LAM_PIECES[1:]):
+        lam = a + (b - a) * (mids + 1) / 2
+        pts += [lam[0], lam[len(lam) // 2], lam[-1], b]
+    pts += list(np.random.default_rng(7).uniform(0, 5, 8))
+    return np.unique(np.array(pts))
+
+
+LAMS = _between_nodes()
+
+
+@pytest.fixture(scope="module")
+def refs():
+    return [exact.solve(x, rtol=1e-13) for x in LAMS]
+
+
+def test_summary_within_documented_bound(refs):
+    s = zs.summary(LAMS, model="exact")  # default backend: the table
+    for f in FIELDS:
+        ref = np.array([getattr(r, f) for r in refs])
+        rel = np.abs(getattr(s, f) - ref) / np.abs(ref)
+        assert rel.max() <= exact_fast.SUMMARY_RTOL, (f, LAMS[rel.argmax()], rel.max())
+
+
+def test_xi_against_energy_balance_and_restitution(refs):
+    s = zs.summary(LAMS, model="exact")
+    ref_J = np.array([r.int_F2 for r in refs])
+    np.testing.assert_allclose(s.xi, 2 * LAMS * ref_J, rtol=exact_fast.SUMMARY_RTOL, atol=0)
+    # 1 - e^2 from the integrator cancels for small lambda; compare where it does not
+    big = LAMS > 0.1
+    ref = np.array([1 - r.w_end**2 for r in refs])
+    np.testing.assert_allclose(s.xi[big], ref[big], rtol=exact_fast.SUMMARY_RTOL)
+
+
+def test_hertz_limit_closed_forms():
+    s = zs.summary(0.0, model="exact")
+    assert s.delta_m == pytest.approx(1.25**0.4, rel=1e-12)
+    assert s.e == pytest.approx(1.0, rel=1e-12)
+    assert s.eta == pytest.approx(1.0, rel=1e-12)
+    assert s.xi == 0.0
+    # tau_dc = int_0^dm d delta / sqrt(1 - 4/5 delta^{5/2}) = dm B(2/5, 1/2) / (5/2), from the
+    # energy integral delta'^2 = 1 - (4/5) delta^{5/2}
+    from scipy.special import beta
+    assert s.tau_dc == pytest.approx(1.25**0.4 * beta(0.4, 0.5) / 2.5, rel=1e-12)
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.37, 1.5, 2.71, 4.44, 5.0])
+def test_history_within_documented_bound(lam):
+    r = exact.solve(lam, rtol=1e-13)
+    tau = np.concatenate([np.linspace(0, r.tau_d * 1.05, 600), [r.tau_dc, 1e-6, r.tau_d * 0.999999]])
+    h = zs.history(lam, tau, model="exact")
+    g = r.history(tau)
+    scale = {"delta": r.delta_m, "force": r.F_m, "impulse": 1.0, "velocity": 1.0}
+    for f, sc in scale.items():
+        err = np.abs(getattr(h, f) - g[f]).max() / sc
+        assert err <= exact_fast.HISTORY_ATOL, (f, lam, err)
+    # relative accuracy of delta in the interior of the contact
+    inner = (tau > 0.01 * r.tau_d) & (tau < 0.99 * r.tau_d)
+    rel = np.abs(h.delta[inner] / g["delta"][inner] - 1).max()
+    assert rel <= 1e3 * exact_fast.HISTORY_ATOL
+
+
+def test_history_identities():
+    lam = np.array([[0.2], [1.3], [3.3], [4.9]])
+    s = zs.summary(lam[:, 0], model="exact")
+    tau = np.stack([np.array([0.0, 0.5 * t, t, 2 * t]) for t in s.tau_d])
+    h = zs.history(lam, tau, model="exact")
+    np.testing.assert_allclose(h.impulse[:, 2], 1 + s.e, rtol=1e-12)  # I(tau_d) = 1 + e
+    np.testing.assert_array_equal(h.delta[:, 3], 0.0)  # after the contact
+    np.testing.assert_allclose(h.impulse[:, 3], 1 + s.e, rtol=1e-15)
+    np.testing.assert_array_equal(h.delta[:, 0], 0.0)
+    np.testing.assert_allclose(h.velocity, 1 - h.impulse, rtol=0, atol=0)
+    np.testing.assert_allclose(h.force, h.delta**1.5, rtol=1e-15)
+
+
+def test_vectorised_equals_elementwise():
+    lam = np.random.default_rng(3).uniform(0, 5, 50)
+    s = zs.summary(lam, model="exact")
+    for i in (0, 17, 49):
+        one = zs.summary(lam[i], model="exact")
+        # same numbers up to summation order (numpy may reorder sums for longer arrays)
+        assert one.tau_d == pytest.approx(s.tau_d[i], rel=1e-14)
+        assert one.e == pytest.approx(s.e[i], rel=1e-14)
+
+
+def test_outside_range_integrates_never_extrapolates():
+    lam = np.array([1.0, 5.0 + 1e-9, 7.5])
+    auto = zs.summary(lam, model="exact")
+    integ = zs.summary(lam, model="exact", backend="scipy")
+    # outside the table's range the default path IS the integrator (same numbers)
+    assert np.array_equal(auto.e[1:], integ.e[1:])
+    assert np.array_equal(auto.tau_d[1:], integ.tau_d[1:])
+    h = zs.history(7.5, [0.5, 3.0], model="exact")
+    hi = zs.history(7.5, [0.5, 3.0], model="exact", backend="scipy")
+    assert np.array_equal(h.delta, hi.delta)
+    with pytest.raises(ValueError, match=r"outside the exact table's range \[0, 5\]"):
+        zs.summary(lam, model="exact", backend="table")
+    with pytest.raises(ValueError, match="outside the exact table's range"):
+        exact_fast.summary(np.array([5.5]))
+
+
+def test_integrator_options_force_integration():
+    a = zs.summary(2.0, model="exact", rtol=1e-10)
+    b = zs.summary(2.0, model="exact", backend="scipy", rtol=1e-10)
+    assert a.e == b.e and a.tau_d == b.tau_d
+    with pytest.raises(ValueError, match="does not go with backend='table'"):
+        zs.summary(2.0, model="exact", backend="table", rtol=1e-10)
+    with pytest.raises(ValueError, match="unknown backend"):
+        zs.summary(2.0, model="exact", backend="chebyshev")
+
+
+def test_table_is_fresh_hash():
+    """The committed table was built from the current builder and solver sources."""
+    assert exact_table.INPUTS_HASH == build.inputs_hash(), (
+        "generated/exact_table.py is stale: run `zener-sym exact-table` and commit it")
+
+
+def test_compare_detects_a_changed_coefficient():
+    stored = {"summary": exact_table.SUMMARY, "history": exact_table.HISTORY}
+    fresh = {"summary": {k: [np.asarray(c, float) for c in v] for k, v in stored["summary"].items()},
+             "history": {k: [np.asarray(c, float) for c in v] for k, v in stored["history"].items()}}
+    assert build.compare(stored, fresh) == []
+    fresh["summary"]["log_e"][2] = fresh["summary"]["log_e"][2].copy()
+    fresh["summary"]["log_e"][2][5] += 1e-8
+    assert len(build.compare(stored, fresh)) == 1
+
+
+@pytest.mark.slow
+def test_table_rebuild_agrees_numerically():
+    """`zener-sym exact-table --check`: a rebuild agrees with the committed coefficients."""
+    from zener_sym import exact_table_cmd
+
+    assert exact_table_cmd.run(check=True) == 0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("lam", [0.0123, 1.7771, 4.6543])
+def test_against_mpmath_reference(lam):
+    """Every summary field within the documented bound of the mpmath Taylor integrator (dps 20),
+    and the history within its bound of the reference's own history."""
+    from zener_sym import exact_mp
+
+    r = exact_mp.solve(lam, dps=20)
+    s = zs.summary(lam, model="exact", backend="table")
+    for f in FIELDS + ("xi",):
+        assert float(getattr(s, f)) == pytest.approx(float(getattr(r, f)),
+                                                     rel=exact_fast.SUMMARY_RTOL, abs=0), f
+    tau = np.linspace(0, 1.02 * float(r.tau_d), 300)
+    g = r.history(tau)
+    h = zs.history(lam, tau, model="exact", backend="table")
+    assert np.abs(h.delta - g["delta"]).max() <= exact_fast.HISTORY_ATOL * float(r.delta_m)
+    assert np.abs(h.impulse - g["impulse"]).max() <= exact_fast.HISTORY_ATOL
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(lam=st.floats(0.0, 5.0), frac=st.lists(st.floats(0.0, 1.1), min_size=2, max_size=30))
+def test_history_is_physical(lam, frac):
+    """delta >= 0, the impulse never decreases (dI/dtau = F >= 0) and ends at 1 + e."""
+    s = zs.summary(lam, model="exact")
+    tau = np.sort(np.array(frac)) * s.tau_d
+    h = zs.history(lam, tau, model="exact")
+    assert np.all(h.delta >= 0)
+    assert np.all(np.diff(h.impulse) >= -1e-12)
+    assert np.all(h.impulse <= 1 + s.e + 1e-12)
+    assert np.all(h.delta[tau >= s.tau_d] == 0)

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -57,18 +58,41 @@ def _exact_fast_section() -> str:
     return section()
 
 
+def bench_section() -> str:
+    """Work-precision charts and the stability map (``zener-sym bench --quick``) into OUT_DIR."""
+    from .bench import cmd
+
+    folder = OUT_DIR / "bench"
+    text = cmd.run(folder, quick=True, log=lambda *a: None)
+    keep = text.split("## Best accuracy")[0].split("## Work-precision charts")[0]
+    tail = text.split("## Speed targets")[1] if "## Speed targets" in text else ""
+    return ("## Speed against accuracy (quick benchmark)\n\n" + keep.split("\n", 2)[2].strip()
+            + f"\n\nCharts, CSV tables and the full summary: `{folder}/` (BENCHMARKS.md, "
+            "work_precision_*.png, stability.png).\n\n### Speed targets" + tail)
+
+
+#: Where report sections write files (charts); set by ``run``.
+OUT_DIR = Path("zener-sym-report")
+
 #: (title, callable returning markdown). Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
     ("scene", scene_section),
     ("exact-fast", _exact_fast_section),
+    ("bench", bench_section),
 ]
 
 
-def run(out=print) -> int:
+def run(out=print, out_dir=None, skip=()) -> int:
+    """Print every section; files (charts) go to ``out_dir``. ``skip``: section names to leave out."""
+    global OUT_DIR
+    if out_dir is not None:
+        OUT_DIR = Path(out_dir)
     out("# zener-sym report\n")
     status = 0
     for name, section in SECTIONS:
+        if name in skip:
+            continue
         try:
             out(section())
         except Exception as exc:  # a failing section must not hide the others
@@ -80,4 +104,8 @@ def run(out=print) -> int:
 
 def add_parser(sub) -> None:
     p = sub.add_parser("report", help="the main job: every part of the project, summarised")
-    p.set_defaults(func=lambda args: run())
+    p.add_argument("--out", default="zener-sym-report",
+                   help="folder for the charts and tables (default: zener-sym-report)")
+    p.add_argument("--skip", action="append", default=[], metavar="SECTION",
+                   help="leave out a section (repeatable): " + ", ".join(n for n, _ in SECTIONS))
+    p.set_defaults(func=lambda args: run(out_dir=args.out, skip=tuple(args.skip)))

@@ -67,9 +67,11 @@ def run(out: pathlib.Path, quick: bool = False, log=print) -> str:
         f"({len(cat)} methods). Errors are against {ref['source']} at lambda = "
         f"{', '.join(f'{x:g}' for x in ref['lambdas'])} ({ref['n_tau']} history points each).",
         "",
-        "Time: one warm-up call, then repeats until 0.3 s (0.05 s with --quick) have passed, "
-        "median per call, divided by the number of lambda; all methods timed in one process, one "
-        "after the other.",
+        "Time: the first call gives the values and warms up; when it took less than 0.3 s "
+        "(0.05 s with --quick), further calls are timed until that much time has passed and the "
+        "median is kept, otherwise the first call's time is kept. Divided by the number of "
+        "lambda. All methods are timed in one process, one after the other, so they share the "
+        "machine's load.",
         "",
         "## Work-precision charts",
         "",

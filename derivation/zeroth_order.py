@@ -1,0 +1,2 @@
+def derive(ctx):
+    return set()

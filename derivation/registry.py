@@ -19,7 +19,7 @@ __all__ = ["Derivation", "derive", "PARTS", "REQUIRED"]
 
 #: The parts, in order (each may use what the previous ones added).
 PARTS = (homotopy.derive, delta_m.derive, zeroth_order.derive, first_order.derive,
-         hertz_limit.derive, scaling.derive)
+         scaling.derive, hertz_limit.derive)
 
 #: Names every consumer may rely on (the contract with codegen and the audit).
 REQUIRED = (

@@ -327,7 +327,6 @@ def derive(ctx: Context) -> dict:
         C113=C113, C114=C114, C123=C123, C124=C124, C11_hyp=C11_hyp, C12_hyp=C12_hyp,
         C11_0=C11_0, C12_0=C12_0, delta1=delta1, delta_ham1=delta_ham1,
     )
-    G = sp.Function("G")
     ctx.eq("36", sp.Symbol("f(\\tau)"), f_elem + f_sqrt, "forcing of (30), valid for 0 < omega0 tau < pi")
     ctx.eq("37", sp.Symbol(r"\bar\delta_1"), sp.exp(-beta * tau) * (sp.Symbol("C_{11}(\\tau)") * s + sp.Symbol("C_{12}(\\tau)") * c),
            "variation of constants")
@@ -351,7 +350,6 @@ def derive(ctx: Context) -> dict:
     ctx.eq("42", sp.Symbol(r"\bar\delta"), delta0 + sp.exp(-beta * tau) * ((sp.Symbol("C_{11}(\\tau)") - sp.Symbol("C_{11}(0)")) * s
                                                                          + (sp.Symbol("C_{12}(\\tau)") - sp.Symbol("C_{12}(0)")) * c),
            "first-order HAM solution")
-    del G
     return set(ctx.expr)
 
 

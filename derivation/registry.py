@@ -46,7 +46,8 @@ class Derivation:
         :mod:`.scaling` (``E1``, ``nu1``, ``rho1``, ``E2``, ``nu2``, ``rho2``, ``R``, ``H``,
         ``V0``, ``m``, ``Estar``, ``int_F2``).
     expr : dict
-        name -> SymPy expression (see ``REQUIRED``).
+        name -> SymPy expression (see ``REQUIRED``); ``dm_interp_max_rel_error`` and
+        ``dm_interp_argmax`` are plain floats (measured, not derived).
     equations : dict
         paper equation number -> (LaTeX of the derived equation, description).
     seconds : float

@@ -84,7 +84,12 @@ def run(checks: bool = True, echo=None) -> Derivation:
                       time.perf_counter() - t0)
 
 
-@functools.lru_cache(maxsize=None)
 def derive(checks: bool = True) -> Derivation:
-    """The whole derivation, cached per process. See :class:`Derivation`."""
+    """The whole derivation, cached per process (``derive()`` and ``derive(checks=True)`` share
+    one entry). See :class:`Derivation`."""
+    return _derive_cached(bool(checks))
+
+
+@functools.lru_cache(maxsize=None)
+def _derive_cached(checks: bool) -> Derivation:
     return run(checks=checks)

@@ -330,6 +330,9 @@ def derive(ctx: Context) -> dict:
     ctx.eq("36", sp.Symbol("f(\\tau)"), f_elem + f_sqrt, "forcing of (30), valid for 0 < omega0 tau < pi")
     ctx.eq("37", sp.Symbol(r"\bar\delta_1"), sp.exp(-beta * tau) * (sp.Symbol("C_{11}(\\tau)") * s + sp.Symbol("C_{12}(\\tau)") * c),
            "variation of constants")
+    ctx.eq("38", sp.Symbol(r"C'_{11}\sin(\omega_0\tau) + C'_{12}\cos(\omega_0\tau) = 0,\quad "
+                            r"C'_{11}\cos(\omega_0\tau) - C'_{12}\sin(\omega_0\tau)"),
+           sp.exp(beta * tau) * sp.Symbol(r"f(\tau)") / w, "variation-of-constants system")
     ctx.eq("39a", sp.Symbol("C'_{11}"), C11p, "solved from (38)")
     ctx.eq("39b", sp.Symbol("C'_{12}"), C12p, "solved from (38)")
     ctx.eq("40", sp.Symbol("C_{11}"), sp.Symbol("C_{11,elem}") + q1 * sp.Symbol("C_{113}") + q2 * sp.Symbol("C_{114}"),

@@ -18,6 +18,7 @@ COMMAND_MODULES = [
     "scene_cmd",
     "envelopes",
     "exact_table_cmd",
+    "derive_cmd",
 ]
 
 

@@ -52,6 +52,8 @@ def scene_section() -> str:
         "meeting rtol = 1e-3\n(`zener-sym scene --sphere table1-sphere --plate table1-plate "
         "--radius 0.9mm --thickness 0.5mm --v0 1m/s`).\n\n" + res.to_markdown()
     )
+
+
 def _exact_fast_section() -> str:
     from .exact_fast_report import section  # imported late: it imports this module
 
@@ -71,12 +73,20 @@ def bench_section() -> str:
             "work_precision_*.png, stability.png).\n\n### Speed targets" + tail)
 
 
+def derivation_section() -> str:
+    # imported when the section runs: the derivation is offline code, not on the runtime path
+    from .derive_cmd import report_section
+
+    return report_section()
+
+
 #: Where report sections write files (charts); set by ``run``.
 OUT_DIR = Path("zener-sym-report")
 
 #: (title, callable returning markdown). Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
+    ("derivation", derivation_section),
     ("scene", scene_section),
     ("exact-fast", _exact_fast_section),
     ("bench", bench_section),

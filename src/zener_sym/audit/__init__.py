@@ -1,0 +1,1 @@
+"""Paper audit: each printed item of the paper against the derivation and the exact solution."""

@@ -41,6 +41,15 @@ SECTIONS = [
 ]
 
 
+def _audit_section() -> str:
+    from .audit.cli import report_section
+
+    return report_section()
+
+
+SECTIONS.append(("audit", _audit_section))
+
+
 def run(out=print) -> int:
     out("# zener-sym report\n")
     status = 0

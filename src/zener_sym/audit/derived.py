@@ -143,9 +143,20 @@ def get(name: str, *, prefer_registry: bool = True):
     """
     reg = registry()
     why = reg if isinstance(reg, str) else f"derivation registry has no {name!r}"
-    if prefer_registry and not isinstance(reg, str) and name in getattr(reg, "expr", {}):
-        return _to_audit_symbols(reg.expr[name]), "derivation registry"
     loc = local()
+    if prefer_registry and not isinstance(reg, str) and name in getattr(reg, "expr", {}):
+        expr = _to_audit_symbols(reg.expr[name])
+        if name not in loc:
+            return expr, "derivation registry"
+        # Two independent routes: they must agree, or the audit says so and keeps its own form
+        # (a symbol-naming mismatch must not turn into a false "typo").
+        from .verdicts import compare  # noqa: PLC0415 (verdicts imports printed only)
+
+        ok, ev = compare(expr, loc[name])
+        if ok:
+            return expr, "derivation registry (agrees with the audit's own derivation)"
+        return loc[name], (f"derived in the audit: the registry's {name!r} differs from it ({ev}); "
+                           f"the integrator should look")
     if name in loc:
         return loc[name], f"derived in the audit ({why})"
     raise NotAvailable(f"{why}, and the audit does not derive {name!r} itself")

@@ -112,3 +112,19 @@ def test_full_audit_json_and_audit_md_fresh(capsys):
     # no check crashed
     assert not [r["id"] for r in rows if "check failed" in r["evidence"]]
     assert cli.main(["audit", "--check"]) == 0
+
+
+# Claims: the printed numbers live in printed.py; perturbing them must change the verdict.
+@pytest.mark.parametrize("item_id, old, new, before, after", [
+    ("claim:tau_d0", "3.072", "3.082", "claim-holds", "claim-fails"),
+    ("claim:lambda_bound", "2.442", "2.452", "claim-holds", "claim-fails"),
+    ("claim:omega0_lam0", "1.023", "1.032", "claim-holds", "claim-fails"),
+    ("claim:int_F2_poly", "1.78,", "1.73,", "claim-fails", "claim-holds"),
+    ("claim:eq24_5pct", "0.05,", "0.04,", "claim-holds", "claim-fails"),
+    ("70", "2.755", "2.0", "claim-holds", "claim-fails"),
+])
+def test_perturbed_claim_changes_verdict(monkeypatch, item_id, old, new, before, after):
+    item = printed.by_id(item_id)
+    assert audit_item(item).verdict == before
+    assert old in item.parse
+    assert _mutated(monkeypatch, item_id, item.parse.replace(old, new, 1)).verdict == after

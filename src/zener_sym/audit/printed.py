@@ -18,7 +18,7 @@ import sympy as sp
 
 from ._raw import RAW_EQUATIONS
 
-__all__ = ["Printed", "ITEMS", "NS", "SYM", "by_id", "parse"]
+__all__ = ["Printed", "ITEMS", "NS", "SYM", "by_id", "parse", "numbers"]
 
 # Dimensionless core (positive: the audit samples them in their physical range).
 lam, tau, k, beta, omega0, p, x, y, dm = sp.symbols("lam tau k beta omega0 p x y dm", positive=True)
@@ -63,8 +63,9 @@ def _def(name, raw, parse, reads=""):
     return Printed(name, "definition", raw, parse, reads)
 
 
-def _claim(name, raw):
-    return Printed("claim:" + name, "claim", raw, None, "")
+def _claim(name, raw, numbers, reads):
+    # ``numbers``: the printed number(s) of the claim, comma-separated, digits exactly as printed
+    return Printed("claim:" + name, "claim", raw, numbers, reads)
 
 
 R_ = "Rational"
@@ -247,30 +248,49 @@ ITEMS: tuple[Printed, ...] = (
          "Rational(5,4)**Rational(1,10)", "omega0 at lambda = 0 (Sec. 3.2)"),
     # Numeric claims of the text
     _claim("tau_Hertz", r"the dimensionless Hertz's contact duration ... by substituting Eq. (9) to Eq. (2):"
-                        r" $\tau_{\text{Hertz}} \approx 3.214$"),
-    _claim("tau_d0", r"For $\lambda = 0$, we can calculate that $\tau_d \approx 3.072$"),
-    _claim("omega0_lam0", r"$\omega_0 = \left(\frac{5}{4}\right)^{\frac{1}{10}} \approx 1.023$"),
+                        r" $\tau_{\text{Hertz}} \approx 3.214$",
+           '3.214', 'tau_Hertz'),
+    _claim("tau_d0", r"For $\lambda = 0$, we can calculate that $\tau_d \approx 3.072$",
+           '3.072', 'tau_d at lambda = 0'),
+    _claim("omega0_lam0", r"$\omega_0 = \left(\frac{5}{4}\right)^{\frac{1}{10}} \approx 1.023$",
+           '1.023', 'omega0 at lambda = 0'),
     _claim("lambda_bound", r"Simplifying Inequation (81) reveals that Eq. (80) can be used for"
-                           r" $\lambda \in [0, 2.442)$"),
+                           r" $\lambda \in [0, 2.442)$",
+           '2.442', 'upper end of lambda for (80)'),
     _claim("eq24_5pct", r"For $\lambda \in [0, 100]$ ... Eq. (24) can be used for the estimation of"
-                        r" $\bar{\delta}_m^{-\frac{3}{2}}$, with a maximum error less than 5%"),
+                        r" $\bar{\delta}_m^{-\frac{3}{2}}$, with a maximum error less than 5%",
+           '0.05, 100', 'max rel. error of (24), lambda range end'),
     _claim("Fm_ham1_2.90pct", r"the present first-order solution can predict the maximum contact force with a"
-                              r" relative error less than 2.90%"),
+                              r" relative error less than 2.90%",
+           '0.0290', 'max rel. error'),
     _claim("Fm_ham0_5.11pct", r"The present zeroth-order solution can provide an estimation of $\bar{F}_m$ with"
-                              r" relative error less than 5.11%, but only for the case of $\lambda > 1.5$"),
-    _claim("impulse_ham1_3.95pct", r"the relative error of the present first-order solution is less than 3.95%"),
+                              r" relative error less than 5.11%, but only for the case of $\lambda > 1.5$",
+           '0.0511, 1.5', 'max rel. error, lower end of lambda'),
+    _claim("impulse_ham1_3.95pct", r"the relative error of the present first-order solution is less than 3.95%",
+           '0.0395', 'max rel. error'),
     _claim("eq70_10pct_1pct", r"the relative error of Eq. (70) is less than 10% for most of the cases and less"
-                              r" than 1% for $\lambda \geq 1.61$"),
+                              r" than 1% for $\lambda \geq 1.61$",
+           '0.10, 0.01, 1.61', 'rel. error mostly, rel. error above, lambda from'),
     _claim("eq80_to_1.8", r"the present model Eq. (80) derived from the zeroth-order solution extends the"
-                          r" applicable region to $\lambda \leq 1.8$"),
-    _claim("int_F2_poly", r"$\int_0^{\tau_d} \bar{F}^2 d\tau \approx 1.78 - 2.79\lambda + 2.36\lambda^2 + \dots$"),
-    _claim("fit55", r"$\tau_d = \tau_{\text{Hertz}} \exp(0.23\lambda^{1.80})$ (fit of the first-order results)"),
-    _claim("xi_V0^0.2", r"for small $\lambda$, we find that the Zener loss is proportional to $V_0^{0.2}$"),
+                          r" applicable region to $\lambda \leq 1.8$",
+           '1.8', 'upper end of lambda'),
+    _claim("int_F2_poly", r"$\int_0^{\tau_d} \bar{F}^2 d\tau \approx 1.78 - 2.79\lambda + 2.36\lambda^2 + \dots$",
+           '1.78, -2.79, 2.36', 'polynomial coefficients'),
+    _claim("fit55", r"$\tau_d = \tau_{\text{Hertz}} \exp(0.23\lambda^{1.80})$ (fit of the first-order results)",
+           '3.214, 0.23, 1.80', 'tau_Hertz, factor, power'),
+    _claim("xi_V0^0.2", r"for small $\lambda$, we find that the Zener loss is proportional to $V_0^{0.2}$",
+           '0.2', 'power of V0'),
     _claim("table1_lambda_range", r"Table 1 (R = 0.9 mm; sphere E = 12.23 GPa, nu = 0.21, rho = 879 kg/m^3;"
                                   r" plate E = 73 GPa, nu = 0.21, rho = 2500 kg/m^3), V0 from 1 to 20 m/s,"
                                   r" H from 0.18 to 0.75 mm 'to enable a wide range of lambda'"
-                                  r" (Fig. 5 and the text use lambda from about 0.07 to 2.3)"),
+                                  r" (Fig. 5 and the text use lambda from about 0.07 to 2.3)",
+           '0.07, 2.3', 'lambda range'),
 )
+
+
+#: Table 1 of the appendix (FEM materials) and the appendix's ranges, as printed, in SI units.
+TABLE1 = {"R": 0.9e-3, "E1": 12.23e9, "nu1": 0.21, "rho1": 879.0, "E2": 73e9, "nu2": 0.21,
+          "rho2": 2500.0, "V0_range": (1.0, 20.0), "H_range": (0.18e-3, 0.75e-3)}
 
 
 def by_id(item_id: str) -> Printed:
@@ -281,10 +301,17 @@ def by_id(item_id: str) -> Printed:
     raise ValueError(f"no printed item with id {item_id!r}")
 
 
+def numbers(item: Printed) -> list[str]:
+    """The printed numbers of a claim, as strings with their printed digits."""
+    return [n.strip() for n in (item.parse or "").split(",") if n.strip()]
+
+
 def parse(item: Printed):
     """The SymPy form of the printed transcription (None when there is none)."""
     if item.parse is None:
         return None
+    if item.kind == "claim":
+        return numbers(item)
     ns = dict(NS, gamma=sp.gamma)
     ns["I_"] = sp.I
     return sp.sympify(item.parse, locals=ns, rational=False)

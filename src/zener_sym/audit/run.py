@@ -11,6 +11,8 @@ __all__ = ["audit_item", "run_audit", "summary_line"]
 
 
 def _printed_text(item: Printed) -> str:
+    if item.kind == "claim":
+        return item.raw
     return item.parse if item.parse is not None else item.raw
 
 
@@ -39,7 +41,9 @@ def audit_item(item: Printed) -> Result:
     except Exception as exc:  # a failing check must not hide the others
         verdict, der, evidence, note = ("not-checkable", "", f"check failed: {type(exc).__name__}: "
                                         f"{exc}", "audit bug: please report")
-    if item.reads and not note:
+    if item.kind == "claim":
+        pass  # a claim's ``reads`` names its printed numbers; the note stays the check's
+    elif item.reads and not note:
         note = item.reads
     elif item.reads:
         note = f"{item.reads}: {note}"

@@ -220,11 +220,22 @@ def _eq30():
             f"order p^1 of (14), using (28) L(d0) = 0; {ev}", "")
 
 
-@check("29", "31")
-def _ics():
-    return ("consistent", "d0(0)=0, d0'(0)=1; d1(0)=d1'(0)=0",
-            "the initial conditions of (10) do not depend on p: order p^0 of delta(0) = 0, "
-            "delta'(0) = 1 takes them, order p^1 gets zero", "")
+def _ics(item_id):
+    # delta(0) = d0(0) + p d1(0) = 0 and delta'(0) = d0'(0) + p d1'(0) = 1 for every p.
+    a0, a1, b0, b1 = sp.symbols("a0 a1 b0 b1")
+    eqs = sp.Poly(a0 + p * a1, p).all_coeffs()[::-1] + sp.Poly(b0 + p * b1 - 1, p).all_coeffs()[::-1]
+    sol = sp.solve(eqs, [a0, a1, b0, b1], dict=True)[0]
+    derived = (sol[a0], sol[b0]) if item_id == "29" else (sol[a1], sol[b1])
+    pr = tuple(_p(item_id))
+    ok = pr == tuple(derived)
+    return ("consistent" if ok else "typo", str(derived),
+            f"the initial conditions of (10) do not depend on p: the orders p^0, p^1 of "
+            f"delta(0) = 0, delta'(0) = 1 with the series (16) give (d0(0), d0'(0)) = "
+            f"({sol[a0]}, {sol[b0]}), (d1(0), d1'(0)) = ({sol[a1]}, {sol[b1]})", "")
+
+
+CHECKS["29"] = lambda: _ics("29")
+CHECKS["31"] = lambda: _ics("31")
 
 
 @check("32")
@@ -309,11 +320,6 @@ def _elem(expr):
         b == s_ and not e.is_integer for b, e in (a.as_base_exp() for a in sp.Mul.make_args(tt)))])
 
 
-@check("40", "41")
-def _eq40_41(item_id=None):
-    raise NotImplementedError  # replaced below (needs the id)
-
-
 def _check_C(item_id):
     which = "C11" if item_id == "40" else "C12"
     prime, src = D.get(f"{which}_prime")
@@ -344,7 +350,7 @@ def _check_C(item_id):
     ok = ok_e and ok_s
     return ("consistent" if ok else "typo", f"d/dtau {which} = {prime}",
             f"elementary part ({names[0]}, {names[1]} terms) vs {which}' of (39): {ev_e}; "
-            f"{label} term, normalised by C123 = C114 and (41) as the integral of "
+            f"{label} term, normalised ({'by the printed C123 = C114 and the C123 term of (41)' if label == 'C114' else 'by the check of the printed C124'}) as the integral of "
             f"{integrand}: coefficient printed {coef_p}, derived {coef_d}: {ev_s}; derived form: {src}",
             "" if ok else ("elementary part disagrees" if not ok_e else
                            f"the {label} coefficient needs omega0^(5/2), not omega0^(3/2)"
@@ -394,11 +400,6 @@ def _eq49():
     derived = -C111_0 * sp.sin(omega0 * tau)
     return _cmp("49", derived, "-C11(0) sin(omega0 tau) at lambda = 0, C11(0) = C111(0) (the "
                 "sqrt terms vanish at 0)", what="the explicit term of delta1 at lambda = 0")
-
-
-@check("C11^d", "C12^d")
-def _Cd():
-    raise NotImplementedError
 
 
 def _check_Cd(item_id):
@@ -469,11 +470,6 @@ def _garbled_C():
             "2F1(a, b; c; z) can be read off", "derived form: registry C113/C114/C123 (issue 3)")
 
 
-@check("C11(0)", "C12(0)")
-def _C0():
-    raise NotImplementedError
-
-
 def _check_C0(item_id):
     name = "C11_0" if item_id == "C11(0)" else "C12_0"
     try:
@@ -487,11 +483,6 @@ def _check_C0(item_id):
 
 CHECKS["C11(0)"] = lambda: _check_C0("C11(0)")
 CHECKS["C12(0)"] = lambda: _check_C0("C12(0)")
-
-
-@check("C111", "C112", "C121", "C122")
-def _elem_C():
-    raise NotImplementedError
 
 
 def _check_elem_C(item_id):
@@ -618,11 +609,6 @@ def _hertz_pulse(which):
         return amp * sp.sin(om * tau), om, amp, sp.Integer(1)
     amp = dmb ** sp.Rational(3, 2)  # (4/3) sqrt(R) E* dm^(3/2) / F_scale = dmbar^(3/2)
     return amp * sp.sin(om * tau) ** sp.Rational(3, 2), om, amp, sp.Rational(3, 2)
-
-
-@check("52", "53")
-def _hunter_reed():
-    raise NotImplementedError
 
 
 def _check_pulse(item_id):
@@ -792,11 +778,6 @@ def _chi():
                       src + "; chi = 2 lambda / ((R/H)^2 V0^(1/5)), m* = (4/3) pi R^3 rho1")
 
 
-@check("43", "44")
-def _Fscale():
-    raise NotImplementedError
-
-
 def _check_Fscale(item_id):
     Fs, src = D.get("F_scale")
     return _dims_then(item_id, _FORCE, "force scale", Fs, src + "; F scale = m* V0 / T")
@@ -822,13 +803,8 @@ def _eq48():
     return _dims_then("48", _M * _L / _Ts, "impulse scale", Is, src)
 
 
-@check("46", "73")
-def _defs_phys():
-    raise NotImplementedError
-
-
-CHECKS["46"] = lambda: ("consistent", "", "definition of the impulse; units of F dt = M L/Ts", "definition")
-CHECKS["73"] = lambda: ("consistent", "", "definition of the work; units of F dw = M L^2/Ts^2", "definition")
+CHECKS["46"] = lambda: _dims_then("46", _M * _L / _Ts, "I (definition)", None)
+CHECKS["73"] = lambda: _dims_then("73", _M * _L**2 / _Ts**2, "W (definition)", None)
 
 
 @check("62")
@@ -891,11 +867,6 @@ def _eq75():
     return _dims_then("75", _M * _L**2 / _Ts**2, "W", derived,
                       src + "; W = alpha F_scale^2 T int = lambda m* V0^2 int, lambda = chi/2 (R/H)^2 V0^(1/5)",
                       extra={S["chi"]: (_L / _Ts) ** sp.Rational(-1, 5)})
-
-
-@check("76", "77")
-def _xi76():
-    raise NotImplementedError
 
 
 def _check_xi(item_id):

@@ -90,8 +90,13 @@ def local() -> dict:
     forcing = -(sp.diff(d0, tau, 2) + sp.Rational(3, 2) * lam * sp.sqrt(d0) * sp.diff(d0, tau)
                 + d0 ** sp.Rational(3, 2))
     out["forcing"] = forcing
-    out["C11_prime"] = sp.cos(omega0 * tau) / omega0 * sp.exp(beta * tau) * forcing
-    out["C12_prime"] = -sp.sin(omega0 * tau) / omega0 * sp.exp(beta * tau) * forcing
+    # (38): variation of constants for delta1 = e^(-beta tau)(C11 sin + C12 cos), solved for C'.
+    A, B = sp.symbols("A B")
+    s_, c_ = sp.sin(omega0 * tau), sp.cos(omega0 * tau)
+    sol = sp.solve([A * s_ + B * c_, A * c_ - B * s_ - sp.exp(beta * tau) * forcing / omega0], [A, B],
+                   dict=True)[0]
+    out["C11_prime"] = sp.simplify(sol[A])
+    out["C12_prime"] = sp.simplify(sol[B])
     out.update(_scaling())
     return out
 

@@ -110,11 +110,11 @@ ITEMS: tuple[Printed, ...] = (
             " + Rational(3,8)*d1(tau)**2/sqrt(d0(tau))*p**2", "(d0 + p d1)**(3/2) to O(p^2)"),
     _eq(28, "Derivative(d0(tau), tau, 2) + k*lam*Derivative(d0(tau), tau) + k*d0(tau)",
         "left side of (28)"),
-    _eq(29, None, "d0(0) = 0, d0'(0) = 1"),
+    _eq(29, "(0, 1)", "(d0(0), d0'(0))"),
     _eq(30, "Eq(Derivative(d1(tau), tau, 2) + k*lam*Derivative(d1(tau), tau) + k*d1(tau),"
             " -(Derivative(d0(tau), tau, 2) + Rational(3,2)*lam*sqrt(d0(tau))*Derivative(d0(tau), tau)"
             " + d0(tau)**Rational(3,2)))", "equation for delta_1"),
-    _eq(31, None, "d1(0) = 0, d1'(0) = 0"),
+    _eq(31, "(0, 0)", "(d1(0), d1'(0))"),
     _eq(32, "lam/2*(lam + Rational(5,4)**Rational(1,5))**Rational(-1,5)", "beta(lambda)"),
     _eq(33, "sqrt(4*(lam + Rational(5,4)**Rational(1,5))**Rational(-1,5)"
             " - lam**2*(lam + Rational(5,4)**Rational(1,5))**Rational(-1,5))/2", "omega0(lambda)"),
@@ -144,7 +144,7 @@ ITEMS: tuple[Printed, ...] = (
     _eq(44, "(Rational(4,3)*Es*R**Rational(1,2))**Rational(2,3)*ms**Rational(2,3)*V0**Rational(6,3)",
         "force scale (denominator of F-bar)"),
     _eq(45, "d(tau)**Rational(3,2)", "F-bar"),
-    _eq(46, None, "I = integral of F dt (definition)"),
+    _eq(46, "Integral(Ff(t), t)", "I (definition)"),
     _eq(47, None, "I-bar = integral of F-bar dtau (definition)"),
     _eq(48, "ms*V0", "impulse scale I / I-bar"),
     _eq(49, "sin(omega0*tau)/(2*omega0)", "delta_1 at lambda = 0 minus the C^d terms"),
@@ -180,7 +180,7 @@ ITEMS: tuple[Printed, ...] = (
     _eq(70, "1 - exp(-2.755*lam)", "xi fit"),
     _eq(71, "2.755*lam - 3.795*lam**2 + 3.485*lam**3 - 2.400*lam**4", "expansion of (70)"),
     _eq(72, "(R/H)**2*V0**0.2", "xi is proportional to (small lambda)"),
-    _eq(73, None, "W = integral of F dw (definition)"),
+    _eq(73, "Integral(Ff(t), w)", "W (definition)"),
     _eq(74, "1/(4*rho2*H**2)*sqrt(3*rho2*(1 - nu2**2)/E2)*x",
         "W (second line; x = integral of F^2 dt; the first line's 'dl' reads as dI)"),
     _eq(75, "Rational(1,2)*chi*ms*V0**Rational(11,3)*(R/H)**2*x", "W (x = integral of F-bar^2 dtau)"),

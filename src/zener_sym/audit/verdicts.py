@@ -168,6 +168,9 @@ def dimension(expr, extra: dict | None = None):
     if extra:
         dims.update(extra)
     e = sp.sympify(expr)
+    # An integral has the dimension of integrand times variable.
+    e = e.replace(lambda a: isinstance(a, sp.Integral),
+                  lambda a: a.function * sp.Mul(*[lim[0] for lim in a.limits]))
     # d/dt -> 1/t: a derivative has the dimension of its argument over the variable's.
     e = e.replace(lambda a: isinstance(a, sp.Derivative),
                   lambda a: a.expr / sp.Mul(*[v**n for v, n in a.variable_count]))

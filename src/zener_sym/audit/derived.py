@@ -38,11 +38,24 @@ def registry():
         return f"derivation registry failed ({type(exc).__name__}: {str(exc)[:80]})"
 
 
+#: Registry ``.symbols`` keys whose audit name differs (the registry's m is m*, Estar is E*).
+_ALIASES = {"m": "ms", "Estar": "Es", "m_star": "ms", "E_star": "Es"}
+
+
 def _to_audit_symbols(expr):
-    """Replace the registry's symbols by the audit's symbols of the same name (assumptions differ)."""
+    """Replace the registry's symbols by the audit's (by ``.symbols`` key, then by name)."""
     if not isinstance(expr, sp.Basic):
         return expr
-    rep = {s: SYM[s.name] for s in expr.free_symbols if s.name in SYM and s != SYM[s.name]}
+    rep = {}
+    reg = registry()
+    if not isinstance(reg, str):
+        for key, sym in getattr(reg, "symbols", {}).items():
+            name = _ALIASES.get(key, key)
+            if isinstance(sym, sp.Symbol) and name in SYM:
+                rep[sym] = SYM[name]
+    for s in expr.free_symbols:
+        if s not in rep and s.name in SYM:
+            rep[s] = SYM[s.name]
     return expr.xreplace(rep)
 
 

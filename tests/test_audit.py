@@ -74,9 +74,12 @@ def test_ham_claims_not_checkable_without_ham1(monkeypatch):
 
 
 def test_missing_derived_form_is_not_checkable(monkeypatch):
-    # Neither the registry nor the audit derives C11(0): the verdict must not guess.
+    # Neither the registry nor the audit's own derivation has k(lambda): the verdict must not guess.
     monkeypatch.setattr(derived, "registry", lambda: "derivation registry not importable (test)")
-    r = audit_item(printed.by_id("C11(0)"))
+    monkeypatch.setattr(derived, "local", lambda: {})
+    with pytest.raises(derived.NotAvailable):
+        derived.get("k_of_lam")
+    r = audit_item(printed.by_id("25"))
     assert r.verdict == "not-checkable" and "registry" in r.evidence
 
 

@@ -13,6 +13,7 @@ import sys
 #: Modules (relative to zener_sym) that each contribute one subcommand.
 COMMAND_MODULES = [
     "report",
+    "derive_cmd",
     "audit.cli",
 ]
 

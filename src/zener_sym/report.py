@@ -35,9 +35,17 @@ def exact_section() -> str:
     )
 
 
+def derivation_section() -> str:
+    # imported when the section runs: the derivation is offline code, not on the runtime path
+    from .derive_cmd import report_section
+
+    return report_section()
+
+
 #: (title, callable returning markdown). Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
+    ("derivation", derivation_section),
 ]
 
 

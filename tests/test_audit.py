@@ -53,6 +53,10 @@ def test_perturbed_correct_form_is_flagged(monkeypatch, item_id, old, new):
     ("T", "(ms/(Rational(4,3)*Es*sqrt(R*V0)))**Rational(2,5)"),
     ("53", "1.143*sin(0.977*tau)**Rational(3,2)"),
     ("C11^d", "-cos(omega0*tau)**2/(2*omega0) - 2/(5*omega0)*(sin(omega0*tau)/omega0)**Rational(5,2)"),
+    ("C12^d", "(sin(2*omega0*tau) - 2*omega0*tau)/(4*omega0) + Rational(4,5)*exp(I_*omega0*tau)"
+              "*G(1, Rational(9,4), -Rational(1,4), exp(2*I_*omega0*tau))*(sin(omega0*tau)/omega0)**Rational(7,2)"),
+    ("40", "(omega0**2 - beta**2)/omega0**2*x + 2*beta/omega0*y - 3*lam/(2*omega0**Rational(3,2))*C11(tau)"
+           " + (3*lam*beta - 2)/(2*omega0**Rational(5,2))*C12(tau)"),
 ])
 def test_flagged_item_passes_with_its_derived_form(monkeypatch, item_id, fixed):
     assert audit_item(printed.by_id(item_id)).verdict == "typo"

@@ -19,6 +19,7 @@ COMMAND_MODULES = [
     "envelopes",
     "exact_table_cmd",
     "derive_cmd",
+    "audit.cli",
 ]
 
 

@@ -80,6 +80,12 @@ def derivation_section() -> str:
     return report_section()
 
 
+def _audit_section() -> str:
+    from .audit.cli import report_section
+
+    return report_section()
+
+
 #: Where report sections write files (charts); set by ``run``.
 OUT_DIR = Path("zener-sym-report")
 
@@ -87,6 +93,7 @@ OUT_DIR = Path("zener-sym-report")
 SECTIONS = [
     ("exact", exact_section),
     ("derivation", derivation_section),
+    ("audit", _audit_section),
     ("scene", scene_section),
     ("exact-fast", _exact_fast_section),
     ("bench", bench_section),

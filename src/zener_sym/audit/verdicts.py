@@ -1,0 +1,206 @@
+"""The verdict machinery: printed vs derived, symbolically, then at high precision, and units.
+
+Verdicts: ``consistent`` (the printed form equals the derived one), ``typo`` (readable, but it
+disagrees), ``garbled`` (the transcription cannot be read as a formula), ``claim-holds`` /
+``claim-fails`` (numeric claims and printed rounded constants), ``not-checkable`` (no derived
+form or reference available; the note says why).
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import asdict, dataclass
+
+import mpmath as mp
+import sympy as sp
+
+from .printed import SYM
+
+__all__ = ["Result", "VERDICTS", "compare", "equal_up_to_factor", "dimension", "rounds_to",
+           "DIMS", "sample_point"]
+
+VERDICTS = ("consistent", "typo", "garbled", "claim-holds", "claim-fails", "not-checkable")
+
+
+@dataclass
+class Result:
+    """One row of the audit."""
+
+    id: str
+    kind: str
+    verdict: str
+    printed: str
+    derived: str
+    evidence: str
+    note: str
+
+    def __post_init__(self):
+        if self.verdict not in VERDICTS:
+            raise ValueError(f"verdict {self.verdict!r} is not one of {VERDICTS}")
+
+    def as_dict(self) -> dict:
+        return asdict(self)
+
+
+# Sampling ranges: physical ranges of each symbol, so that square roots stay real
+# (0 < omega0 tau < pi, lam below the critical 2.44, Poisson ratios in (0, 1/2)).
+_RANGES = {"lam": (0.05, 2.3), "tau": (0.05, 1.2), "k": (0.6, 1.1), "beta": (0.05, 0.9),
+           "omega0": (0.3, 1.1), "p": (0.1, 0.9), "x": (0.05, 0.9), "y": (0.1, 1.0),
+           "dm": (0.5, 1.5), "nu1": (0.1, 0.45), "nu2": (0.1, 0.45), "t": (0.05, 1.0)}
+_DEFAULT_RANGE = (0.5, 3.0)
+
+# Test functions for unknown functions of tau in relations: smooth, positive on the sample range.
+_TEST_FUNCS = {"d": lambda s: 0.3 + s / 2 + s**2 / 7, "d0": lambda s: 0.4 + s / 3 + s**2 / 5,
+               "d1": lambda s: 0.1 + s / 9 - s**2 / 11, "yf": lambda s: 1 - s**2 / 3,
+               "C11": lambda s: 0.2 + s / 5, "C12": lambda s: -0.3 + s**2 / 6}
+
+
+def sample_point(symbols, rng) -> dict:
+    """A random point (mpmath 30-digit values) for ``symbols`` in their physical ranges."""
+    pt = {}
+    for s in sorted(symbols, key=lambda s: s.name):
+        lo, hi = _RANGES.get(s.name, _DEFAULT_RANGE)
+        pt[s] = sp.Float(rng.uniform(lo, hi), 30)
+    return pt
+
+
+def _with_test_functions(expr):
+    """Replace applied undefined functions (d(tau), C11(tau), ...) by explicit test functions."""
+    rep = {}
+    for f in expr.atoms(sp.core.function.AppliedUndef):
+        name = f.func.__name__
+        if name in _TEST_FUNCS and len(f.args) == 1:
+            rep[f] = _TEST_FUNCS[name](f.args[0])
+    return expr.subs(rep).doit() if rep else expr
+
+
+def _num(expr, pt):
+    with mp.workdps(30):
+        v = sp.N(expr.subs(pt), 30)
+    return complex(v) if v.is_number else None
+
+
+def compare(printed, derived, n_points: int = 6, seed: int = 12345, rtol: float = 1e-20,
+            symbolic: bool = True):
+    """Compare two SymPy expressions: (equal: bool, evidence: str).
+
+    Symbolic first (``simplify(printed - derived) == 0``); otherwise high-precision (30 digits)
+    values at ``n_points`` random points of the free symbols in their physical ranges. Applied
+    unknown functions are replaced by the same smooth test functions on both sides.
+    """
+    P, D = _with_test_functions(sp.sympify(printed)), _with_test_functions(sp.sympify(derived))
+    # simplify is tried on small expressions only (it can take minutes on the first-order ones)
+    if symbolic and sp.count_ops(P) + sp.count_ops(D) <= 300:
+        try:
+            diff = sp.simplify(P - D)
+            if diff == 0:
+                return True, "symbolic: simplify(printed - derived) = 0"
+        except Exception:  # simplify can fail on odd printed forms; fall through to numbers
+            pass
+    rng = random.Random(seed)
+    syms = (P.free_symbols | D.free_symbols)
+    worst, where = 0.0, None
+    for _ in range(n_points):
+        pt = sample_point(syms, rng)
+        a, b = _num(P, pt), _num(D, pt)
+        if a is None or b is None:
+            return False, "numeric: could not evaluate at a sample point"
+        err = abs(a - b) / max(abs(b), 1e-300)
+        if err > worst:
+            worst, where = err, (pt, a, b)
+    if worst <= rtol:
+        return True, (f"numeric: 30-digit values agree at {n_points} random points "
+                      f"(max rel. diff {worst:.1e})")
+    pt, a, b = where
+    at = ", ".join(f"{s}={float(v):.4g}" for s, v in pt.items())
+    return False, (f"numeric: at {at}: printed {_fmt(a)}, derived {_fmt(b)} "
+                   f"(rel. diff {worst:.3g})")
+
+
+def equal_up_to_factor(printed, derived, n_points: int = 6, seed: int = 7, rtol: float = 1e-20):
+    """For relations (residuals = 0): is printed = c * derived with one constant c != 0?"""
+    P, D = _with_test_functions(sp.sympify(printed)), _with_test_functions(sp.sympify(derived))
+    rng = random.Random(seed)
+    syms = (P.free_symbols | D.free_symbols)
+    ratios = []
+    for _ in range(n_points):
+        pt = sample_point(syms, rng)
+        a, b = _num(P, pt), _num(D, pt)
+        if a is None or b is None or b == 0:
+            return False, "numeric: could not evaluate the residuals at a sample point"
+        ratios.append(a / b)
+    c = ratios[0]
+    spread = max(abs(r - c) for r in ratios) / max(abs(c), 1e-300)
+    if abs(c) > 0 and spread <= rtol:
+        return True, (f"numeric: printed residual = {_fmt(c)} x derived residual at {n_points} "
+                      f"random points with test functions (spread {spread:.1e})")
+    return False, (f"numeric: printed/derived residual ratio varies between {_fmt(ratios[0])} and "
+                   f"{_fmt(ratios[-1])} at random points (spread {spread:.3g})")
+
+
+def _fmt(z) -> str:
+    z = complex(z)
+    if abs(z.imag) <= 1e-25 * max(1.0, abs(z.real)):
+        return f"{z.real:.10g}"
+    return f"{z.real:.6g}{z.imag:+.6g}j"
+
+
+# ---- units: each physical symbol as a monomial in the base dimensions M, L, Ts -----------------
+_M, _L, _Ts = sp.symbols("M L Ts", positive=True)
+_P = _M / (_L * _Ts**2)  # pressure, modulus
+DIMS = {"m1": _M, "mh": _M, "m2": _M, "ms": _M, "Es": _P, "E1": _P, "E2": _P,
+        "rho1": _M / _L**3, "rho2": _M / _L**3, "R": _L, "H": _L, "V0": _L / _Ts, "V": _L / _Ts,
+        "V_W": _L / _Ts, "t": _Ts, "T": _Ts, "alpha": _Ts / _M, "I": _M * _L / _Ts,
+        "F": _M * _L / _Ts**2, "W": _M * _L**2 / _Ts**2, "w": _L, "dm": _L,
+        "kc": 1 / (_L**2 * _Ts**2)}
+#: Dimensionless symbols get a generic number, so that 1 - nu**2 does not vanish.
+_DIMLESS = {"nu1": sp.Rational(2, 7), "nu2": sp.Rational(3, 11)}
+
+
+def dimension(expr, extra: dict | None = None):
+    """The dimension of ``expr`` as a monomial in M, L, Ts, or None if its terms disagree.
+
+    Symbols not in :data:`DIMS` must be dimensionless (or given in ``extra``). A sum whose terms
+    have different dimensions has no dimension (returns None).
+    """
+    # Each symbol also gets its own generic numeric factor, so that a difference of two terms of
+    # the same dimension (m1 V0 - I) does not cancel to 0.
+    primes = (3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83)
+    dims = {SYM[n]: sp.Rational(primes[i % len(primes)], 97) * v
+            for i, (n, v) in enumerate(sorted(DIMS.items())) if n in SYM}
+    dims.update({SYM[n]: v for n, v in _DIMLESS.items()})
+    if extra:
+        dims.update(extra)
+    e = sp.sympify(expr)
+    # An integral has the dimension of integrand times variable.
+    e = e.replace(lambda a: isinstance(a, sp.Integral),
+                  lambda a: a.function * sp.Mul(*[lim[0] for lim in a.limits]))
+    # d/dt -> 1/t: a derivative has the dimension of its argument over the variable's.
+    e = e.replace(lambda a: isinstance(a, sp.Derivative),
+                  lambda a: a.expr / sp.Mul(*[v**n for v, n in a.variable_count]))
+    for f in e.atoms(sp.core.function.AppliedUndef):  # delta(t) has dimension L, F(t) a force
+        e = e.subs(f, _M * _L / _Ts**2 if f.func.__name__ == "Ff" else _L)
+    e = e.subs(dims)
+    e = sp.powsimp(sp.powdenest(sp.factor(sp.simplify(e)), force=True), force=True)
+    mono = sp.Integer(1)
+    for fac in sp.Mul.make_args(e):
+        base, ex = fac.as_base_exp()
+        if base in (_M, _L, _Ts):
+            mono *= fac
+        elif fac.free_symbols & {_M, _L, _Ts}:
+            return None
+    return mono
+
+
+def rounds_to(value, printed: str) -> tuple[bool, str]:
+    """Does ``value`` round to the printed decimal string (to its number of decimals)?
+
+    Truncation is accepted too (the paper sometimes truncates): |value - printed| < 1 unit in
+    the last printed place.
+    """
+    dec = len(printed.split(".")[1]) if "." in printed else 0
+    ulp = 10.0 ** (-dec)
+    diff = abs(float(value) - float(printed))
+    ok = diff < ulp
+    how = "rounds" if round(float(value), dec) == float(printed) else (
+        "truncates" if ok else "does not round")
+    return ok, f"{float(value):.{dec + 3}f} {how} to {printed} (|diff| = {diff:.2g}, unit {ulp:g})"

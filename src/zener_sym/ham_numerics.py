@@ -1,0 +1,114 @@
+"""Numerical glue for the generated HAM kernels: a stable P3, vectorised root finding, contact
+integrals. Hand-written (algorithms, not formulas); the generated modules in generated/ call it.
+
+* ``p3(x) = (sin x - x cos x) / x^3``: the elementary part of delta1 is written with it, so that
+  tau -> 0 and omega0 -> 0 lose no digits. Series below |x| < 1/2, direct formula above.
+* ``first_root``: the first sign change of f on a scan grid, then bisection to a few ulps, all
+  lambda values at once (no Python loop over points; the loop is over bisection steps).
+* ``contact_integral``: integral of a function of (tau, lam) over [A, B] with the smoothstep map
+  tau = A + (B - A) v^2 (3 - 2 v) and Gauss-Legendre in v. The map's derivative vanishes at both
+  ends, which turns the endpoint behaviours of the force, (tau - A)^{3/2} at the start and the end
+  of contact and (pi/omega0 - tau)^{3/2} where the zeroth-order sqrt terms switch off, into
+  analytic integrands in v, so Gauss-Legendre converges geometrically.
+"""
+from __future__ import annotations
+
+import math
+
+import mpmath
+import numpy as np
+
+__all__ = ["p3", "p3_mp", "first_root", "contact_integral", "contact_integral_mp", "N_GL"]
+
+# Taylor coefficients of P3: sum_j (-1)^j 2 (j + 1) x^{2j} / (2j + 3)!
+_P3_COEF = [(-1) ** j * 2.0 * (j + 1) / math.factorial(2 * j + 3) for j in range(12)]
+
+
+def p3(x):
+    """(sin x - x cos x)/x^3 for a float array, accurate to rounding (P3(0) = 1/3)."""
+    x = np.asarray(x, dtype=float)
+    small = np.abs(x) < 0.5
+    x2 = x * x
+    series = np.zeros_like(x)
+    for c in reversed(_P3_COEF):  # Horner in x^2; 12 terms reach 1e-19 at |x| = 1/2
+        series = series * x2 + c
+    xs = np.where(small, 1.0, x)
+    direct = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
+    return np.where(small, series, direct)
+
+
+def p3_mp(x):
+    """P3 at the current mpmath precision (series for |x| < 1/2)."""
+    x = mpmath.mpf(x)
+    if abs(x) >= 0.5:
+        return (mpmath.sin(x) - x * mpmath.cos(x)) / x**3
+    tot, term, j = mpmath.mpf(0), None, 0
+    eps = mpmath.eps
+    while True:
+        term = (-1) ** j * 2 * (j + 1) * x ** (2 * j) / mpmath.factorial(2 * j + 3)
+        tot += term
+        if abs(term) < eps * abs(tot):
+            return tot
+        j += 1
+
+
+def first_root(fun, lam, lo, hi, n_scan=64, what="root"):
+    """First zero of fun(tau, lam) in (lo, hi], per lambda (1-D arrays), fun(lo) > 0 assumed.
+
+    Scans n_scan cells, then bisects the first cell where fun <= 0. Raises ValueError, naming
+    lambda, if there is no sign change.
+    """
+    lam = np.asarray(lam, dtype=float)
+    lo = np.asarray(lo, dtype=float)
+    hi = np.asarray(hi, dtype=float)
+    v = np.linspace(0.0, 1.0, n_scan + 1)
+    grid = lo[:, None] + (hi - lo)[:, None] * v
+    vals = fun(grid, lam[:, None])
+    neg = vals <= 0.0
+    neg[:, 0] = False
+    found = neg.any(axis=1)
+    if not found.all():
+        bad = lam[~found][0]
+        raise ValueError(f"no {what} found between tau = {lo[~found][0]:.6g} and "
+                         f"{hi[~found][0]:.6g} at lambda = {bad!r}")
+    j = np.argmax(neg, axis=1)
+    rows = np.arange(lam.size)
+    a, b = grid[rows, j - 1], grid[rows, j]
+    for _ in range(200):
+        mid = 0.5 * (a + b)
+        done = (mid <= a) | (mid >= b)
+        if done.all():
+            break
+        fm = fun(mid, lam)
+        pos = fm > 0.0
+        a = np.where(pos & ~done, mid, a)
+        b = np.where(~pos & ~done, mid, b)
+    return 0.5 * (a + b)
+
+
+N_GL = 48
+_gx, _gw = np.polynomial.legendre.leggauss(N_GL)
+_V = (1.0 + _gx) / 2.0
+_WV = _gw / 2.0
+_MAP = _V * _V * (3.0 - 2.0 * _V)
+_DMAP = 6.0 * _V * (1.0 - _V)
+
+
+def contact_integral(fun, A, B, lam):
+    """integral_A^B fun(tau, lam) dtau for arrays A <= B, lam (same shape), smoothstep + GL."""
+    A, B, lam = np.broadcast_arrays(np.asarray(A, float), np.asarray(B, float),
+                                    np.asarray(lam, float))
+    L = np.maximum(B - A, 0.0)
+    t = A[..., None] + L[..., None] * _MAP
+    vals = fun(t, lam[..., None])
+    return L * np.sum(vals * (_DMAP * _WV), axis=-1)
+
+
+def contact_integral_mp(fun, A, B):
+    """Same as ``contact_integral`` for mpmath scalars (mpmath.quad on the mapped variable)."""
+    A, B = mpmath.mpf(A), mpmath.mpf(B)
+    if B <= A:
+        return mpmath.mpf(0)
+    L = B - A
+    return L * mpmath.quad(lambda v: fun(A + L * v * v * (3 - 2 * v)) * 6 * v * (1 - v), [0, 1],
+                           method="gauss-legendre")

@@ -26,10 +26,16 @@ class _NumpyPrinter(NumPyPrinter):
     def _print_P3(self, e):
         return f"_p3({self._print(e.args[0])})"
 
+    def _print_Atan2(self, e):
+        return f"numpy.arctan2({self._print(e.args[0])}, {self._print(e.args[1])})"
+
 
 class _MpPrinter(MpmathPrinter):
     def _print_P3(self, e):
         return f"_p3({self._print(e.args[0])})"
+
+    def _print_Atan2(self, e):
+        return f"mpmath.atan2({self._print(e.args[0])}, {self._print(e.args[1])})"
 
     def _print_re(self, e):
         return f"mpmath.re({self._print(e.args[0])})"

@@ -57,6 +57,13 @@ class P3(sp.Function):
     nargs = 1
 
 
+class Atan2(sp.Function):
+    """atan2(y, x) kept unevaluated through cse (SymPy turns atan2 of positive symbols into
+    atan(y/x), which divides by zero at beta = 0); printed as arctan2 / mpmath.atan2."""
+
+    nargs = 2
+
+
 SYMBOLS = {"tau": tau, "lam": lam, "beta": beta, "omega0": omega0, "k": k, "S": S, "Kcc": Kcc,
            "Ksc": Ksc, "Kss": Kss, "Ks": Ks, "a": a_, "theta": theta_, "m": m_}
 
@@ -109,7 +116,7 @@ def ham_expressions() -> dict:
     _check("(57) delta0'(tau_dc) = 0", _zero(sp.expand_trig(d0d.subs(tau, tau_dc))))
     e["tau_d0"] = sp.pi / omega0  # (54)
     # printed with atan2 (unevaluated), so that beta = 0 (lambda = 0) needs no division by zero
-    phi = sp.atan2(omega0, beta, evaluate=False)
+    phi = Atan2(omega0, beta)
     e["tau_dc0"] = phi / omega0
     e["tau_dr0"] = (sp.pi - phi) / omega0  # (60)
     e["eta0"] = (sp.pi - phi) / phi  # (61)
@@ -118,6 +125,8 @@ def ham_expressions() -> dict:
     e["e0"] = sp.exp(-sp.pi * beta / omega0)
     dm = sp.exp(-beta * tau_dc) / sp.sqrt(kk)  # sin(atan2(omega0, beta)) = omega0 / sqrt(k)
     _check("delta_m0 = delta0(tau_dc)", _zero(sp.expand_trig(d0.subs(tau, tau_dc)) - dm))
+    _check("delta_m0 with Atan2", _zero(dm - (sp.exp(-beta * phi / omega0) / sp.sqrt(kk)).replace(
+        Atan2, sp.atan2)))
     e["delta_m0"] = sp.exp(-beta * phi / omega0) / sp.sqrt(kk)
     # integral of F0^2 = delta0^3 over the zeroth-order contact, closed form
     u = sp.Symbol("u", positive=True)

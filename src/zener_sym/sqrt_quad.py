@@ -57,11 +57,16 @@ K_FUNCS = {
 }
 
 
+def _sin_over(s, x):
+    """sin(x)/x from sin(x), with the limit 1 at x = 0 (T = 0 puts every node at 0)."""
+    return np.divide(s, x, out=np.ones_like(x), where=x > 0)
+
+
 def _left(a, T, names):
     """integral_0^T exp(-a t) g(t) sqrt(sin t) dt for 0 <= T <= pi/2 (arrays broadcast)."""
     x = T[..., None] * _U  # trailing axis: nodes
     s, c = np.sin(x), np.cos(x)
-    base = np.exp(-a[..., None] * x) * np.sqrt(np.sinc(x / np.pi)) * _W
+    base = np.exp(-a[..., None] * x) * np.sqrt(_sin_over(s, x)) * _W
     scale = T * np.sqrt(T)
     return {n: scale * np.sum(base * K_FUNCS[n](s, c), axis=-1) for n in names}
 
@@ -71,7 +76,7 @@ def _right(a, r, names):
     x = r[..., None] * _U  # distance from pi
     s, c = np.sin(x), -np.cos(x)  # sin and cos of t = pi - x
     # exp(-a t) with t = pi - x >= pi/2: never overflows
-    base = np.exp(-a[..., None] * (np.pi - x)) * np.sqrt(np.sinc(x / np.pi)) * _W
+    base = np.exp(-a[..., None] * (np.pi - x)) * np.sqrt(_sin_over(s, x)) * _W
     scale = r * np.sqrt(r)
     return {n: scale * np.sum(base * K_FUNCS[n](s, c), axis=-1) for n in names}
 
@@ -101,6 +106,18 @@ def sqrt_integrals(a, theta, names=("cc", "sc", "ss")) -> dict:
     shape = a.shape
     a = a.reshape(-1)
     th = np.minimum(theta, np.pi).reshape(-1)
+    if a.size > _CHUNK:
+        # blocks of points keep the (points x nodes) temporaries in cache-sized memory
+        parts = [_flat(a[i:i + _CHUNK], th[i:i + _CHUNK], names) for i in range(0, a.size, _CHUNK)]
+        return {n: np.concatenate([p[n] for p in parts]).reshape(shape) for n in names}
+    return {n: v.reshape(shape) for n, v in _flat(a, th, names).items()}
+
+
+_CHUNK = 2048
+
+
+def _flat(a, th, names):
+    """sqrt_integrals on validated 1-D arrays, th already clipped to [0, pi]."""
     half = np.pi / 2.0
     with np.errstate(divide="ignore"):
         cap = np.where(a > 0, CUT / np.where(a > 0, a, 1.0), np.inf)
@@ -110,8 +127,10 @@ def sqrt_integrals(a, theta, names=("cc", "sc", "ss")) -> dict:
     if np.any(past):
         # K(theta) = K(pi/2) + [integral_{pi/2}^{pi} - integral_{theta}^{pi}]
         ap = a[past]
-        full = _right(ap, np.full(ap.shape, half), names)
+        # the piece over [pi/2, pi] depends on a only: once per distinct a
+        ua, inv = np.unique(ap, return_inverse=True)
+        full = {n: v[inv] for n, v in _right(ua, np.full(ua.shape, half), names).items()}
         tail = _right(ap, np.pi - th[past], names)
         for n in names:
             out[n][past] += full[n] - tail[n]
-    return {n: v.reshape(shape) for n, v in out.items()}
+    return out

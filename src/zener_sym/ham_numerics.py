@@ -55,13 +55,15 @@ def p3_mp(x):
 def first_root(fun, lam, lo, hi, n_scan=64, what="root"):
     """First zero of fun(tau, lam) in (lo, hi], per lambda (1-D arrays), fun(lo) > 0 assumed.
 
-    Scans n_scan cells, then bisects the first cell where fun <= 0. Raises ValueError, naming
+    Scans about 2 n_scan cells (uniform and geometric from lo), then bisects the first cell where fun <= 0. Raises ValueError, naming
     lambda, if there is no sign change.
     """
     lam = np.asarray(lam, dtype=float)
     lo = np.asarray(lo, dtype=float)
     hi = np.asarray(hi, dtype=float)
-    v = np.linspace(0.0, 1.0, n_scan + 1)
+    # uniform cells plus geometric ones near lo: omega0 -> 0 stretches [lo, hi] to ~1/omega0
+    # while the roots stay at tau = O(1)
+    v = np.unique(np.concatenate([np.linspace(0.0, 1.0, n_scan + 1), np.geomspace(1e-10, 1.0, n_scan)]))
     grid = lo[:, None] + (hi - lo)[:, None] * v
     vals = fun(grid, lam[:, None])
     neg = vals <= 0.0

@@ -347,6 +347,12 @@ def _prec(dps):
     return mpmath.mp.dps if dps is None else int(dps)
 
 
+def _out(x, p):
+    """x rounded to p digits (the precision the caller asked for)."""
+    with mpmath.workdps(p):
+        return +x
+
+
 def _lam(lam):
     lam = mpmath.mpf(lam)
     if not mpmath.isfinite(lam) or lam < 0 or lam >= mpmath.mpf(LAM_CRIT_DIGITS):
@@ -364,10 +370,11 @@ def _tau(tau):
 
 def params(lam, dps=None):
     """k (25), beta (32), omega0 (33) at ``dps`` digits."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         lam = _lam(lam)
 {params_block}
-    return +k, +beta, +omega0
+    return _out(k, p), _out(beta, p), _out(omega0, p)
 
 
 def _J(m, a, theta):
@@ -409,20 +416,22 @@ def _K(names, a, theta):
 
 def delta0(tau, lam, dps=None):
     """Zeroth-order delta0 (35), analytic continuation (no clipping)."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         tau, lam = _tau(tau), _lam(lam)
 {params_block_2}
 {delta0_block}
-    return +out
+    return _out(out, p)
 
 
 def delta0_dot(tau, lam, dps=None):
     """delta0' (56)."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         tau, lam = _tau(tau), _lam(lam)
 {params_block_2}
 {delta0_dot_block}
-    return +out
+    return _out(out, p)
 '''
 
 _MP_HAM0 = '''
@@ -439,27 +448,30 @@ def delta_dot(tau, lam, dps=None):
 
 def force(tau, lam, dps=None):
     """delta0^(3/2) during 0 <= tau <= pi/omega0, else 0."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         k, beta, omega0 = params(lam, mpmath.mp.dps)
         d = delta0(tau, lam, mpmath.mp.dps)
         out = mpmath.mpf(0) if (omega0 * _tau(tau) > mpmath.pi or d <= 0) else d ** 1.5
-    return +out
+    return _out(out, p)
 
 
 def impulse(tau, lam, dps=None):
     """Impulse (47) = omega0^(-5/2) K_s(3 beta/(2 omega0), omega0 tau) by the 2F1 closed form."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         tau, lam = _tau(tau), _lam(lam)
 {params_block_2}
 {a_imp_block}
         Ks = _K(("s",), a_imp, omega0 * tau)["s"]
 {impulse_block}
-    return +out
+    return _out(out, p)
 
 
 def summary(lam, dps=None):
     """Zeroth-order closed forms (see the numpy module), impulse by Gamma functions."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         lam = _lam(lam)
 {params_block_2}
 {summary_block}
@@ -467,7 +479,7 @@ def summary(lam, dps=None):
 {impulse_block}
         res = dict(k=k, beta=beta, omega0=omega0, tau_d=tau_d, tau_dc=tau_dc, tau_dr=tau_dr,
                    eta=eta, e=e, delta_m=delta_m, F_m=delta_m ** 1.5, impulse=out, int_F2=int_F2)
-    return {{n: +v for n, v in res.items()}}
+    return {{n: _out(v, p) for n, v in res.items()}}
 '''
 
 _MP_HAM1 = '''
@@ -480,32 +492,35 @@ def _Ks(beta, omega0, tau):
 
 def delta1(tau, lam, dps=None):
     """First-order correction delta1 (37)-(42) with C(tau) - C(0) in closed form (2F1, Gamma)."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         tau, lam = _tau(tau), _lam(lam)
 {params_block_2}
         Kcc, Ksc, Kss = _Ks(beta, omega0, tau)
 {delta1_block}
-    return +out
+    return _out(out, p)
 
 
 def delta(tau, lam, dps=None):
     """delta0 + delta1 (42), continued past pi/omega0 with the sqrt integrals frozen."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         tau, lam = _tau(tau), _lam(lam)
 {params_block_2}
         Kcc, Ksc, Kss = _Ks(beta, omega0, tau)
 {delta_block}
-    return +out
+    return _out(out, p)
 
 
 def delta_dot(tau, lam, dps=None):
     """d/dtau (delta0 + delta1)."""
-    with mpmath.workdps(_prec(dps) + 10):
+    p = _prec(dps)
+    with mpmath.workdps(p + 10):
         tau, lam = _tau(tau), _lam(lam)
 {params_block_2}
         Kcc, Ksc, Kss = _Ks(beta, omega0, tau)
 {delta_dot_block}
-    return +out
+    return _out(out, p)
 
 
 def force(tau, lam, dps=None):
@@ -520,10 +535,12 @@ def compression_end(lam, dps=None, guess=None):
     if guess is None:
         from zener_sym.generated import ham1_numpy
         guess = float(ham1_numpy.compression_end(float(lam))[0])
-    with mpmath.workdps(_prec(dps) + 5):
+    p = _prec(dps)
+    with mpmath.workdps(p + 5):
         f = lambda t: delta_dot(t, lam, mpmath.mp.dps)
         h = 1e-7 * guess
-        return +mpmath.findroot(f, (guess - h, guess + h), solver="anderson")
+        root = mpmath.findroot(f, (guess - h, guess + h), solver="anderson")
+    return _out(root, p)
 
 
 def contact_end(lam, dps=None, guess=None):
@@ -531,16 +548,19 @@ def contact_end(lam, dps=None, guess=None):
     if guess is None:
         from zener_sym.generated import ham1_numpy
         guess = float(ham1_numpy.contact_end(float(lam))[0])
-    with mpmath.workdps(_prec(dps) + 5):
+    p = _prec(dps)
+    with mpmath.workdps(p + 5):
         f = lambda t: delta(t, lam, mpmath.mp.dps)
         h = 1e-7 * guess
-        return +mpmath.findroot(f, (guess - h, guess + h), solver="anderson")
+        root = mpmath.findroot(f, (guess - h, guess + h), solver="anderson")
+    return _out(root, p)
 
 
 def impulse(tau, lam, dps=None, tau_d=None):
     """Impulse (47): int_0^min(tau, tau_d) F dtau, split at pi/omega0, mpmath.quad on the
     smoothstep-mapped pieces (slow: many 2F1 evaluations)."""
-    with mpmath.workdps(_prec(dps) + 5):
+    p = _prec(dps)
+    with mpmath.workdps(p + 5):
         tau, lam = _tau(tau), _lam(lam)
         k, beta, omega0 = params(lam, mpmath.mp.dps)
         if tau_d is None:
@@ -549,7 +569,7 @@ def impulse(tau, lam, dps=None, tau_d=None):
         tpi = mpmath.pi / omega0
         f = lambda t: force(t, lam, mpmath.mp.dps)
         out = _hn.contact_integral_mp(f, 0, min(end, tpi)) + _hn.contact_integral_mp(f, tpi, max(end, tpi))
-    return +out
+    return _out(out, p)
 '''
 
 

@@ -1,5 +1,6 @@
 """Numerical glue for the generated HAM kernels: a stable P3, vectorised root finding, contact
-integrals. Hand-written (algorithms, not formulas); the generated modules in generated/ call it.
+integrals. Hand-written (algorithms, not formulas); the generated numpy modules call it (numpy only; the
+mpmath counterparts are in ``ham_numerics_mp``).
 
 * ``p3(x) = (sin x - x cos x) / x^3``: the elementary part of delta1 is written with it, so that
   tau -> 0 and omega0 -> 0 lose no digits. Series below |x| < 1/2, direct formula above.
@@ -15,10 +16,9 @@ from __future__ import annotations
 
 import math
 
-import mpmath
 import numpy as np
 
-__all__ = ["p3", "p3_mp", "first_root", "contact_integral", "contact_integral_mp", "N_GL"]
+__all__ = ["p3", "first_root", "contact_integral", "N_GL"]
 
 # Taylor coefficients of P3: sum_j (-1)^j 2 (j + 1) x^{2j} / (2j + 3)!
 _P3_COEF = [(-1) ** j * 2.0 * (j + 1) / math.factorial(2 * j + 3) for j in range(12)]
@@ -35,21 +35,6 @@ def p3(x):
     xs = np.where(small, 1.0, x)
     direct = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
     return np.where(small, series, direct)
-
-
-def p3_mp(x):
-    """P3 at the current mpmath precision (series for |x| < 1/2)."""
-    x = mpmath.mpf(x)
-    if abs(x) >= 0.5:
-        return (mpmath.sin(x) - x * mpmath.cos(x)) / x**3
-    tot, term, j = mpmath.mpf(0), None, 0
-    eps = mpmath.eps
-    while True:
-        term = (-1) ** j * 2 * (j + 1) * x ** (2 * j) / mpmath.factorial(2 * j + 3)
-        tot += term
-        if abs(term) < eps * abs(tot):
-            return tot
-        j += 1
 
 
 def first_root(fun, lam, lo, hi, n_scan=64, what="root"):
@@ -104,13 +89,3 @@ def contact_integral(fun, A, B, lam):
     t = A[..., None] + L[..., None] * _MAP
     vals = fun(t, lam[..., None])
     return L * np.sum(vals * (_DMAP * _WV), axis=-1)
-
-
-def contact_integral_mp(fun, A, B):
-    """Same as ``contact_integral`` for mpmath scalars (mpmath.quad on the mapped variable)."""
-    A, B = mpmath.mpf(A), mpmath.mpf(B)
-    if B <= A:
-        return mpmath.mpf(0)
-    L = B - A
-    return L * mpmath.quad(lambda v: fun(A + L * v * v * (3 - 2 * v)) * 6 * v * (1 - v), [0, 1],
-                           method="gauss-legendre")

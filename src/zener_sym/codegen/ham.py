@@ -334,7 +334,7 @@ def build_ham1_numpy() -> str:
 _MP_PRELUDE = '''
 import mpmath
 
-from zener_sym import ham_numerics as _hn
+from zener_sym import ham_numerics_mp as _hn
 
 _p3 = _hn.p3_mp
 

@@ -16,11 +16,15 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from ..generated import ham0_mpmath, ham0_numpy, ham1_mpmath, ham1_numpy
-from ..ham_numerics import contact_integral_mp
 from .base import Model, register
 
-LAM_CRIT = ham1_numpy.LAM_CRIT
+
+def _gen(name):
+    """A generated module, imported on first use: ``zener-sym generate`` must run (and rewrite
+    generated/) even when the committed kernels are stale or broken."""
+    import importlib
+
+    return importlib.import_module(f"zener_sym.generated.{name}")
 
 
 def _backend(options):
@@ -42,10 +46,14 @@ _SUMMARY = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "i
 class _HamModel(Model):
     summary_fields = _SUMMARY
     history_fields = ("delta", "velocity", "force", "impulse")
-    lam_bound = LAM_CRIT
     bound_reason = ("lam_crit = 2.44243892998...: omega0 = sqrt(4k - k^2 lambda^2)/2 is real only "
                     "below it, Eq. (81)")
     options = ("backend", "dps")
+
+    @property
+    def lam_bound(self):
+        """lam_crit from the generated module (emitted from the derivation)."""
+        return _gen("ham1_numpy").LAM_CRIT
 
     @staticmethod
     def _finish(d):
@@ -63,29 +71,31 @@ class Ham0(_HamModel):
 
     def _summary(self, lam, **options):
         backend, dps = _backend(options)
+        h0, m0 = _gen("ham0_numpy"), _gen("ham0_mpmath")
         if backend == "numpy":
-            return self._finish(ham0_numpy.summary(lam))
-        rows = [ham0_mpmath.summary(float(x), dps) for x in lam]
+            return self._finish(h0.summary(lam))
+        rows = [m0.summary(float(x), dps) for x in lam]
         return self._finish({f: [float(r[f]) for r in rows] for f in rows[0]})
 
     def _history(self, lam, tau, **options):
         backend, dps = _backend(options)
+        h0, m0 = _gen("ham0_numpy"), _gen("ham0_mpmath")
         if backend == "numpy":
-            k, beta, omega0 = ham0_numpy.params(lam)
+            k, beta, omega0 = h0.params(lam)
             on = omega0 * tau <= np.pi
-            d = np.where(on, np.maximum(ham0_numpy.delta(tau, lam), 0.0), 0.0)
-            imp = ham0_numpy.impulse(tau, lam)
-            force = ham0_numpy.force(tau, lam)
+            d = np.where(on, np.maximum(h0.delta(tau, lam), 0.0), 0.0)
+            imp = h0.impulse(tau, lam)
+            force = h0.force(tau, lam)
         else:
             d, imp, force = (np.empty(tau.shape) for _ in range(3))
             for i in np.ndindex(tau.shape):
                 t, x = float(tau[i]), float(lam[i])
                 with mpmath.workdps(dps):
-                    k, beta, omega0 = ham0_mpmath.params(x)
-                    dd = ham0_mpmath.delta(t, x)
+                    k, beta, omega0 = m0.params(x)
+                    dd = m0.delta(t, x)
                     d[i] = float(dd) if (omega0 * t <= mpmath.pi and dd > 0) else 0.0
-                    imp[i] = float(ham0_mpmath.impulse(t, x))
-                    force[i] = float(ham0_mpmath.force(t, x))
+                    imp[i] = float(m0.impulse(t, x))
+                    force[i] = float(m0.force(t, x))
         return {"delta": d, "force": force, "impulse": imp, "velocity": 1.0 - imp}
 
 
@@ -96,43 +106,48 @@ class Ham1(_HamModel):
 
     def _summary(self, lam, **options):
         backend, dps = _backend(options)
+        h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
         if backend == "numpy":
-            return self._finish(ham1_numpy.summary(lam))
+            return self._finish(h1.summary(lam))
         rows = []
         for x in lam:
             with mpmath.workdps(dps):
-                tdc = ham1_mpmath.compression_end(float(x))
-                td = ham1_mpmath.contact_end(float(x))
-                dm = ham1_mpmath.delta(tdc, float(x))
-                imp = ham1_mpmath.impulse(td, float(x), tau_d=td)
-                k, beta, omega0 = ham1_mpmath.params(float(x))
+                tdc = m1.compression_end(float(x))
+                td = m1.contact_end(float(x))
+                dm = m1.delta(tdc, float(x))
+                imp = m1.impulse(td, float(x), tau_d=td)
+                k, beta, omega0 = m1.params(float(x))
                 tpi = mpmath.pi / omega0
-                f2 = lambda t: ham1_mpmath.force(t, float(x)) ** 2  # noqa: E731
+                f2 = lambda t: m1.force(t, float(x)) ** 2  # noqa: E731
+                from ..ham_numerics_mp import contact_integral_mp
+
                 J = contact_integral_mp(f2, 0, min(td, tpi)) + contact_integral_mp(f2, tpi, max(td, tpi))
-                rows.append(dict(delta_m=dm, tau_dc=tdc, tau_d=td, e=-ham1_mpmath.delta_dot(td, float(x)),
-                                 F_m=dm ** 1.5, impulse=imp, int_F2=J))
+                e = -m1.delta_dot(td, float(x))
+                rows.append(dict(delta_m=dm, tau_dc=tdc, tau_d=td, e=e, F_m=dm ** 1.5, impulse=imp,
+                                 int_F2=J))
         return self._finish({f: [float(r[f]) for r in rows] for f in rows[0]})
 
     def _history(self, lam, tau, **options):
         backend, dps = _backend(options)
+        h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
         u, inv = np.unique(lam, return_inverse=True)
-        td_u = ham1_numpy.contact_end(u)
+        td_u = h1.contact_end(u)
         if backend == "numpy":
             td = td_u[inv].reshape(lam.shape)
             on = tau < td
-            d = np.where(on, np.maximum(ham1_numpy.delta(tau, lam), 0.0), 0.0)
-            imp = ham1_numpy.impulse(tau, lam, tau_d=td)
+            d = np.where(on, np.maximum(h1.delta(tau, lam), 0.0), 0.0)
+            imp = h1.impulse(tau, lam, tau_d=td)
             return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
         d, imp = np.empty(tau.shape), np.empty(tau.shape)
         with mpmath.workdps(dps):
-            td_mp = {float(x): ham1_mpmath.contact_end(float(x), guess=float(t))
+            td_mp = {float(x): m1.contact_end(float(x), guess=float(t))
                      for x, t in zip(u, td_u)}
             for i in np.ndindex(tau.shape):
                 t, x = float(tau[i]), float(lam[i])
                 tdx = td_mp[x]
-                dd = ham1_mpmath.delta(t, x) if t < tdx else mpmath.mpf(0)
+                dd = m1.delta(t, x) if t < tdx else mpmath.mpf(0)
                 d[i] = float(max(dd, 0))
-                imp[i] = float(ham1_mpmath.impulse(t, x, tau_d=tdx))
+                imp[i] = float(m1.impulse(t, x, tau_d=tdx))
         return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
 
 

@@ -35,9 +35,22 @@ def exact_section() -> str:
     )
 
 
+def model_comparison_section() -> str:
+    """Every model against exact at the paper's lambdas, then the HAM error envelopes."""
+    from .envelopes import comparison_markdown, envelope_markdown
+
+    t0 = time.perf_counter()
+    env = envelope_markdown()
+    dt = time.perf_counter() - t0
+    return (comparison_markdown(PAPER_LAMBDAS) + "\n\n### Error envelopes of ham0 and ham1\n\n"
+            "Largest relative error against exact over lambda = 0, 0.1, ..., 2.4 (force history: "
+            f"max |F - F_exact| over the contact / exact F_m); {dt:.1f} s.\n\n" + env)
+
+
 #: (title, callable returning markdown). Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
+    ("model comparison", model_comparison_section),
 ]
 
 

@@ -1,0 +1,163 @@
+"""The step record of the derivation, the shared symbols, and the checking helpers.
+
+Every claim of the derivation is checked by one of the helpers below and recorded as a
+:class:`Step`: the paper's equation number, what was checked, how, whether it passed, a short
+detail (a residual, a simplified difference) and the time it took. A failed check does not stop
+the derivation: it is recorded, and :attr:`Log.ok` becomes False.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import mpmath
+import sympy as sp
+
+__all__ = ["Step", "Log", "SYMBOLS", "symbolic_zero", "mp_max_rel_residual", "MP_DPS"]
+
+#: Working precision (decimal digits) of every mpmath check.
+MP_DPS = 40
+
+#: The symbols shared by every part of the derivation (paper notation, dimensionless core).
+SYMBOLS = {
+    "lam": sp.Symbol("lambda", real=True, nonnegative=True),
+    "tau": sp.Symbol("tau", real=True, nonnegative=True),
+    "k": sp.Symbol("k", positive=True),
+    "beta": sp.Symbol("beta", positive=True),
+    "omega0": sp.Symbol("omega_0", positive=True),
+    "p": sp.Symbol("p", real=True),
+}
+
+
+@dataclass
+class Step:
+    """One checked claim of the derivation.
+
+    Attributes
+    ----------
+    eq : str
+        Paper equation number(s) the step reproduces, e.g. ``"35"`` or ``"28-31"``.
+    what : str
+        The claim.
+    how : str
+        The method of the check (symbolic simplification, mpmath at N digits, ...).
+    passed : bool
+    detail : str
+        The measured residual or the reason of a failure.
+    seconds : float
+        Wall time of the check.
+    """
+
+    eq: str
+    what: str
+    how: str
+    passed: bool
+    detail: str
+    seconds: float
+
+
+@dataclass
+class Log:
+    """The ordered list of steps, with a printer for ``zener-sym derive``."""
+
+    steps: list = field(default_factory=list)
+    echo: object = None  # callable(str) printing each step as it is recorded, or None
+
+    def check(self, eq: str, what: str, how: str, fn) -> bool:
+        """Run ``fn() -> (passed, detail)``, time it and record the step.
+
+        An exception inside ``fn`` is a failed step (its message is the detail), so one broken
+        check cannot hide the others.
+        """
+        t0 = time.perf_counter()
+        try:
+            passed, detail = fn()
+        except Exception as exc:  # recorded as a failure, never swallowed silently
+            passed, detail = False, f"{type(exc).__name__}: {exc}"
+        step = Step(eq, what, how, bool(passed), str(detail), time.perf_counter() - t0)
+        self.steps.append(step)
+        if self.echo is not None:
+            self.echo(format_step(step))
+        return step.passed
+
+    @property
+    def ok(self) -> bool:
+        return all(s.passed for s in self.steps)
+
+
+def format_step(s: Step) -> str:
+    """One line per step: equation, verdict, time, claim, method and detail."""
+    flag = "PASS" if s.passed else "FAIL"
+    return f"[{flag}] ({s.eq:>7}) {s.seconds:6.2f} s  {s.what}  -- {s.how}: {s.detail}"
+
+
+def symbolic_zero(expr, *, rewrite_trig: bool = False) -> tuple[bool, str]:
+    """Whether ``expr`` simplifies to exactly 0, with the simplified form as detail."""
+    e = sp.expand(expr)
+    if e != 0:
+        e = sp.simplify(e)
+    if e != 0 and rewrite_trig:
+        e = sp.simplify(sp.expand(e.rewrite(sp.exp)))
+    return e == 0, "simplifies to 0" if e == 0 else f"left over: {sp.sstr(e)[:200]}"
+
+
+def mp_max_rel_residual(lhs, rhs, points, tol) -> tuple[bool, str]:
+    """Largest |lhs - rhs| / max(|rhs|, tiny) over ``points`` (mpmath callables), against ``tol``.
+
+    ``lhs`` and ``rhs`` are callables of one point; a point where rhs is 0 uses the absolute
+    residual. Returns (passed, detail).
+    """
+    worst, where = mpmath.mpf(0), None
+    for x in points:
+        a, b = lhs(x), rhs(x)
+        scale = abs(b) if b != 0 else mpmath.mpf(1)
+        r = abs(a - b) / scale
+        if r > worst or where is None:
+            worst, where = r, x
+    passed = worst <= tol
+    return passed, f"max rel residual {mpmath.nstr(worst, 3)} over {len(points)} points (tol {tol:g})"
+
+
+@dataclass
+class Context:
+    """What each part of the derivation reads and extends: named expressions, LaTeX equations
+    (paper number -> (latex, description)), the step log, and whether to run the checks."""
+
+    expr: dict = field(default_factory=dict)
+    equations: dict = field(default_factory=dict)
+    log: Log = field(default_factory=Log)
+    checks: bool = True
+    symbols: dict = field(default_factory=lambda: dict(SYMBOLS))
+
+    def eq(self, number: str, lhs, rhs, description: str) -> None:
+        """Record the derived equation ``lhs = rhs`` under the paper's number."""
+        self.equations[number] = (f"{latex(lhs)} = {latex(rhs)}", description)
+
+    def check(self, eq, what, how, fn) -> bool:
+        if not self.checks:
+            return True
+        return self.log.check(eq, what, how, fn)
+
+
+def latex(e) -> str:
+    """LaTeX with fixed settings, so FORMULAS.md is byte-for-byte reproducible."""
+    if isinstance(e, str):
+        return e
+    return sp.latex(e, order="lex", ln_notation=False, mul_symbol=None, inv_trig_style="abbreviated")
+
+
+def run_part(name: str, checks: bool = True, echo=print) -> Context:
+    """Run part ``name`` (a module of this package) on top of the parts before it, checking only
+    that part (for ``python -m zener_sym.derivation.<name>``)."""
+    from . import registry
+
+    ctx = Context(checks=checks)
+    ctx.log.echo = echo
+    for part in registry.PARTS:
+        mine = part.__module__.rsplit(".", 1)[-1] == name
+        ctx.checks = checks and mine
+        part(ctx)
+        if mine:
+            break
+    print(f"{'OK' if ctx.log.ok else 'FAILED'}: {len(ctx.log.steps)} steps")
+    return ctx

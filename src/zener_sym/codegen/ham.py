@@ -14,12 +14,13 @@ from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.pycode import MpmathPrinter
 
 from . import header
+from .ham_exprs import REGISTRY_SOURCES
 from .ham_exprs import SYMBOLS as Y
 from .ham_exprs import ham_expressions
 
 __all__ = ["build_ham0_numpy", "build_ham1_numpy", "build_ham0_mpmath", "build_ham1_mpmath"]
 
-_SOURCES = ("zener_sym.codegen.ham", "zener_sym.codegen.ham_exprs")
+_SOURCES = ("zener_sym.codegen.ham", "zener_sym.codegen.ham_exprs") + REGISTRY_SOURCES
 
 
 class _NumpyPrinter(NumPyPrinter):

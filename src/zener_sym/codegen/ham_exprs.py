@@ -2,9 +2,10 @@
 
 This module collects, for the code generators, the expressions of the HAM solution of Eq. (10) in
 the form numerics needs (stable rewrites, split into what numpy evaluates by quadrature and what
-is elementary). It uses the derivation package's registry when that provides the named results
-(``zener_sym.derivation.registry.derive``), and otherwise derives the few pieces it needs here,
-from the operators (12)-(13) and the zeroth-order ODE (28), with cheap symbolic checks:
+is elementary). Its inputs, k(lambda), lam_crit, delta0 and the forcing (36), come from the
+derivation's registry (``zener_sym.derivation.registry.derive(checks=False)``); each is checked
+here against a cheap independent local route before use (the registry's own checks run in
+``zener-sym derive`` and its tests). On top of them it builds:
 
 * zeroth order (25), (32)-(35), (54), (58), (60), (61), (79): k, beta, omega0, delta0, tau_d,
   tau_dc, tau_dr, eta, e, delta_m0 = delta0(tau_dc), the integral of F0^2 (closed form), lam_crit;
@@ -12,12 +13,11 @@ from the operators (12)-(13) and the zeroth-order ODE (28), with cheap symbolic 
 
       delta1(tau) = (1/omega0) int_0^tau exp(-beta (tau - s)) sin(omega0 (tau - s)) f(s) ds,
 
-  which equals (37) with C1j(tau) - C1j(0). The forcing f = -(delta0'' + 3/2 lam sqrt(delta0)
-  delta0' + delta0^{3/2}) is obtained by substitution (never typed in) and split into
-  f_elem + S f_sqrt with S = sqrt(sin(omega0 s)). The elementary part is integrated by SymPy and
-  rewritten with P3(x) = (sin x - x cos x)/x^3, which removes the 1/omega0^3 cancellation of
-  C11(tau) - C11(0) near the critical lambda and near tau = 0 (the rewrite is checked
-  symbolically). The square-root part is expressed through the integrals
+  which equals (37) with C1j(tau) - C1j(0). The forcing is split into f_elem + S f_sqrt with
+  S = sqrt(sin(omega0 s)). The elementary part is written with P3(x) = (sin x - x cos x)/x^3,
+  which removes the 1/omega0^3 cancellation of C11(tau) - C11(0) near the critical lambda and
+  near tau = 0; that form is proposed and verified symbolically (it solves (30) with f_elem and
+  the zero initial data (31), hence is the convolution). The square-root part is expressed through the integrals
   K_g(a, theta) = int_0^theta exp(-a t) g(t) sqrt(sin t) dt, g in {cos^2, sin cos, sin^2},
   a = beta/(2 omega0): numpy evaluates them by Gauss-Jacobi quadrature (``zener_sym.sqrt_quad``),
   mpmath by the closed form below.
@@ -77,34 +77,52 @@ def _check(name, ok):
         raise AssertionError(f"codegen derivation check failed: {name}")
 
 
+def _from_registry():
+    """The derivation's named results, in this module's symbols (the registry names lambda
+    ``lambda``, a Python keyword, and omega0 ``omega_0``)."""
+    from zener_sym.derivation.registry import derive
+
+    d = derive(checks=False)
+    sym = d.symbols
+    rep = {sym["lam"]: lam, sym["tau"]: tau, sym["beta"]: beta, sym["omega0"]: omega0,
+           sym["k"]: k}
+    names = ("k_of_lam", "lam_crit", "lam_crit_eq", "delta0", "forcing_elem", "forcing_sqrt")
+    return {n: sp.sympify(d.expr[n]).xreplace(rep) for n in names}
+
+
+#: where the inputs come from (named in the generated files' headers)
+REGISTRY_SOURCES = ("zener_sym.derivation.registry",)
+
+
 @functools.lru_cache(maxsize=None)
 def ham_expressions() -> dict:
-    """Name -> SymPy expression for every quantity the HAM kernels print (see module docstring)."""
+    """Name -> SymPy expression for every quantity the HAM kernels print (see module docstring).
+
+    k(lambda), lam_crit, delta0 and the forcing (36) come from the derivation's registry; each is
+    checked here against an independent local route before use.
+    """
+    reg = _from_registry()
     e = {}
     th = omega0 * tau
-    # --- (23)-(25): delta_m at lambda = 0 from the energy integral (22), and k(lambda) -------------
-    # y^2 = 1 - (4/5) delta^{5/2} (22) vanishes at delta_m(0) = (5/4)^{2/5} (23)
+    # --- (23)-(25): k(lambda); local route: delta_m(0) from the energy integral (22) ----------------
     dm0 = sp.Rational(5, 4) ** sp.Rational(2, 5)
     _check("(23) y(delta_m(0)) = 0", _zero(1 - sp.Rational(4, 5) * dm0 ** sp.Rational(5, 2)))
-    k_of_lam = (lam + dm0 ** sp.Rational(-3, 2)) ** sp.Rational(-1, 3)  # (24)-(25), k = sqrt(dm)
-    e["k_of_lam"] = k_of_lam
-    # --- (32)-(33): roots of x^2 + k lam x + k -----------------------------------------------------
-    x = sp.Symbol("x")
-    roots = sp.solve(x**2 + k * lam * x + k, x)
-    _check("(32)-(33) two roots", len(roots) == 2)
-    e["beta_of_lam"] = -sp.re(sp.expand(roots[0] + roots[1])) / 2  # = k lam / 2
-    _check("(32) beta = k lam/2", _zero(e["beta_of_lam"] - k * lam / 2))
+    _check("(25) registry k(lambda)",
+           _zero(reg["k_of_lam"] - (lam + dm0 ** sp.Rational(-3, 2)) ** sp.Rational(-1, 3)))
+    e["k_of_lam"] = reg["k_of_lam"]
+    # --- (32)-(33): beta and omega0 from the roots -beta +- i omega0 of x^2 + k lam x + k --------------
     e["beta_of_lam"] = k * lam / 2
     e["omega0_of_lam"] = sp.sqrt(4 * k - k**2 * lam**2) / 2
-    # roots are -beta +- i omega0 when 4k > k^2 lam^2
-    _check("(33) omega0^2 = k - beta^2",
-           _zero(e["omega0_of_lam"] ** 2 - (k - (k * lam / 2) ** 2)))
-    lam_crit_eq = (4 - k * lam**2).subs(k, k_of_lam)
-    e["lam_crit_eq"] = lam_crit_eq
-    e["lam_crit"] = sp.nsolve(lam_crit_eq, lam, 2.44, prec=40)
+    x = sp.Symbol("x")
+    for r in (-e["beta_of_lam"] + sp.I * e["omega0_of_lam"], -e["beta_of_lam"] - sp.I * e["omega0_of_lam"]):
+        _check("(32)-(33) root of the characteristic equation", _zero((x**2 + k * lam * x + k).subs(x, r)))
+    e["lam_crit_eq"] = reg["lam_crit_eq"]
+    e["lam_crit"] = reg["lam_crit"]
+    _check("(81) lam_crit solves k lam^2 = 4",
+           abs(sp.N(((4 - k * lam**2).subs(k, e["k_of_lam"])).subs(lam, e["lam_crit"]), 45)) < 1e-38)
     # --- (35): delta0, verified against (28)-(29) ---------------------------------------------------
     kk = beta**2 + omega0**2  # k in terms of beta, omega0
-    d0 = sp.exp(-beta * tau) * sp.sin(th) / omega0
+    d0 = reg["delta0"]
     d0d = sp.diff(d0, tau)
     d0dd = sp.diff(d0, tau, 2)
     _check("(28) delta0 solves delta'' + 2 beta delta' + k delta = 0",
@@ -139,38 +157,39 @@ def ham_expressions() -> dict:
     # zeroth-order impulse: int_0^tau delta0^{3/2} = omega0^{-5/2} K_s(3 beta/(2 omega0), theta)
     e["impulse0"] = omega0 ** sp.Rational(-5, 2) * Ks
     e["a_impulse0"] = 3 * beta / (2 * omega0)
-    # --- (36): forcing by substitution ---------------------------------------------------------------
+    # --- (36): forcing; local route by substitution into N, compared with the registry's ------------
     sqrt_d0 = omega0 ** sp.Rational(-1, 2) * sp.exp(-beta * tau / 2) * S
-    lam_b = 2 * beta / kk  # lambda = 2 beta / k
-    f = -(d0dd + sp.Rational(3, 2) * lam * sqrt_d0 * d0d + d0 * sqrt_d0)
-    f = sp.expand(f)
-    f_elem, f_sqrt = f.coeff(S, 0), f.coeff(S, 1)
-    _check("(36) forcing is linear in sqrt(sin)", _zero(f - f_elem - S * f_sqrt))
+    f_local = sp.expand(-(d0dd + sp.Rational(3, 2) * lam * sqrt_d0 * d0d + d0 * sqrt_d0))
+    f_elem, f_sqrt = reg["forcing_elem"], reg["forcing_sqrt"]
+    _check("(36) registry forcing_elem", _zero(f_elem - f_local.coeff(S, 0)))
+    # the registry's sqrt part carries sqrt(sin) (and sin^{3/2}); divide it out
+    g = sp.expand(sp.powsimp(sp.expand(f_sqrt * sp.exp(sp.Rational(3, 2) * beta * tau)
+                                       / sp.sqrt(sp.sin(th)))))
+    _check("(36) registry forcing_sqrt",
+           _zero(g - sp.expand(f_local.coeff(S, 1) * sp.exp(sp.Rational(3, 2) * beta * tau))))
     e["forcing_elem"], e["forcing_sqrt"] = f_elem, f_sqrt
-    # exp(beta tau) f_sqrt = exp(-beta tau/2) (c1 cos + c2 sin)
-    g = sp.expand(sp.simplify(f_sqrt * sp.exp(sp.Rational(3, 2) * beta * tau)))
+    # exp(beta tau) f_sqrt = exp(-beta tau/2) (c1 cos + c2 sin) sqrt(sin)
     c1 = g.coeff(sp.cos(th))
     c2 = g.coeff(sp.sin(th))
     _check("(36) sqrt part = exp(-3 beta tau/2) (c1 cos + c2 sin) sqrt(sin)",
            _zero(g - c1 * sp.cos(th) - c2 * sp.sin(th)) and not (c1.has(tau) or c2.has(tau)))
     e["c1"], e["c2"] = c1, c2
-    # --- (37)-(42): elementary part of delta1 by convolution, stable rewrite -------------------------
-    ker = sp.exp(-beta * (tau - s_)) * sp.sin(omega0 * (tau - s_)) / omega0
-    integrand = sp.expand(sp.expand_trig(ker * f_elem.subs(tau, s_)))
-    d1e = sp.simplify(sp.integrate(integrand, (s_, 0, tau)))
+    # --- (37)-(42): elementary part of delta1, proposed in a stable form and verified ---------------
+    # It is the convolution (1/omega0) int_0^tau exp(-beta(tau-s)) sin(omega0(tau-s)) f_elem(s) ds, i.e.
+    # the solution of L[delta] = f_elem with zero initial data (30)-(31): check exactly that.
+    p3_def = lambda ex: ex.replace(P3, lambda y: (sp.sin(y) - y * sp.cos(y)) / y**3)  # noqa: E731
     d1e_stable = sp.exp(-beta * tau) * ((omega0**2 - beta**2) / 2 * tau**3 * P3(th)
                                         + beta * tau * sp.sin(th) / omega0)
-    p3_def = lambda ex: ex.replace(P3, lambda y: (sp.sin(y) - y * sp.cos(y)) / y**3)  # noqa: E731
-    _check("delta1 elementary part: stable rewrite", _zero(d1e - p3_def(d1e_stable)))
-    kerd = sp.diff(ker, tau)
-    d1ed = sp.simplify(sp.integrate(sp.expand(sp.expand_trig(kerd * f_elem.subs(tau, s_))),
-                                    (s_, 0, tau)))
-    _check("delta1' elementary part is the derivative", _zero(sp.diff(d1e, tau) - d1ed))
+    d1e = p3_def(d1e_stable)
+    _check("delta1 elementary part solves (30) with f_elem",
+           _zero(sp.diff(d1e, tau, 2) + 2 * beta * sp.diff(d1e, tau) + kk * d1e - f_elem))
+    _check("delta1 elementary part: (31) initial conditions",
+           _zero(d1e.subs(tau, 0)) and sp.limit(sp.diff(d1e, tau), tau, 0) == 0)
     d1ed_stable = sp.exp(-beta * tau) * (beta**3 / 2 * tau**3 * P3(th)
                                          + beta * (1 - 3 * beta * tau) * sp.sin(th) / (2 * omega0)
                                          + sp.Rational(3, 2) * beta * tau * sp.cos(th)
                                          + omega0 * tau * sp.sin(th) / 2)
-    _check("delta1' elementary part: stable rewrite", _zero(d1ed - p3_def(d1ed_stable)))
+    _check("delta1' elementary part is the derivative", _zero(sp.diff(d1e, tau) - p3_def(d1ed_stable)))
     # --- square-root part through K integrals (a = beta / (2 omega0)) --------------------------------
     A11 = c1 * Kcc + c2 * Ksc  # omega0^2 (C11_sqrt(tau) - C11_sqrt(0))
     A12 = -(c1 * Ksc + c2 * Kss)  # omega0^2 (C12_sqrt(tau) - C12_sqrt(0))
@@ -180,8 +199,6 @@ def ham_expressions() -> dict:
     e["delta1"] = d1e_stable + d1s
     e["delta1_dot"] = d1ed_stable + d1sd
     e["delta1_sqrt"], e["delta1_elem"] = d1s, d1e_stable
-    # lambda in terms of beta, omega0 is used only to express c1, c2 without lam if wanted
-    e["lam_of_beta_omega0"] = lam_b
     # --- closed forms of J_m for the mpmath kernels ---------------------------------------------------
     c = -a_ + sp.I * (m_ - sp.Rational(1, 2))
     sJ = c / (2 * sp.I)

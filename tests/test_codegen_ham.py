@@ -68,3 +68,12 @@ def test_numpy_kernels_do_not_import_mpmath():
     for name in ("ham0_numpy.py", "ham1_numpy.py"):
         text = (codegen.generated_dir() / name).read_text()
         assert "import mpmath" not in text and "mpmath." not in text
+
+
+@pytest.mark.slow
+def test_cli_generate_check_passes(capsys):
+    """What CI and the hook run: `zener-sym generate --check` on the committed tree."""
+    from zener_sym.cli import main
+
+    assert main(["generate", "--check"]) == 0
+    assert "up to date" in capsys.readouterr().out

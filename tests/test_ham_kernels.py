@@ -147,3 +147,20 @@ def test_lam_crit_value():
         k = (lc + mpmath.mpf(5) / 4 ** mpmath.mpf(-0.6)) if False else (lc + (mpmath.mpf(5) / 4) ** (-mpmath.mpf(3) / 5)) ** (-mpmath.mpf(1) / 3)
         assert abs(k * lc**2 - 4) < mpmath.mpf("1e-38")
     assert h1.LAM_CRIT == float(h1.LAM_CRIT_DIGITS)
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(lam=st.floats(0.0, 2.4424), frac=st.floats(0.0, 3.0))
+def test_kernels_finite_and_force_consistent(lam, frac):
+    """Anywhere in the range: finite values, force = max(delta, 0)^(3/2), impulse nondecreasing."""
+    k, beta, omega0 = h1.params(lam)
+    tau = np.array([0.5, 1.0]) * frac * float(np.pi / omega0)
+    d = h1.delta(tau, lam)
+    assert np.all(np.isfinite(d)) and np.all(np.isfinite(h1.delta_dot(tau, lam)))
+    np.testing.assert_array_equal(h1.force(tau, lam), np.maximum(d, 0) ** 1.5)
+    imp = h0.impulse(tau, lam)
+    assert np.all(np.isfinite(imp)) and imp[1] >= imp[0] >= 0

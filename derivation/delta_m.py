@@ -111,8 +111,8 @@ def derive(ctx: Context) -> dict:
         scan()
     err, where = found["err"], found["at"]
 
-    ctx.expr.update(dm_of_lam=dm_of_lam, k_of_lam=k_of_lam, dm_interp_max_rel_error=sp.Float(err, 15),
-                    dm_interp_argmax=sp.Float(where, 15))
+    ctx.expr.update(dm_of_lam=dm_of_lam, k_of_lam=k_of_lam, dm_interp_max_rel_error=float(err),
+                    dm_interp_argmax=float(where))
     dm = sp.Symbol(r"\bar\delta_m")
     ctx.eq("17", sp.Symbol(r"y\,\frac{dy}{d\bar\delta}"),
            sp.Symbol(r"-\tfrac{3}{2}\lambda\sqrt{\bar\delta}\,y - \bar\delta^{3/2}"), "Eq. (10) with y = delta'")

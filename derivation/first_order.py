@@ -327,7 +327,6 @@ def derive(ctx: Context) -> dict:
         C113=C113, C114=C114, C123=C123, C124=C124, C11_hyp=C11_hyp, C12_hyp=C12_hyp,
         C11_0=C11_0, C12_0=C12_0, delta1=delta1, delta_ham1=delta_ham1,
     )
-    G = sp.Function("G")
     ctx.eq("36", sp.Symbol("f(\\tau)"), f_elem + f_sqrt, "forcing of (30), valid for 0 < omega0 tau < pi")
     ctx.eq("37", sp.Symbol(r"\bar\delta_1"), sp.exp(-beta * tau) * (sp.Symbol("C_{11}(\\tau)") * s + sp.Symbol("C_{12}(\\tau)") * c),
            "variation of constants")
@@ -336,7 +335,7 @@ def derive(ctx: Context) -> dict:
     ctx.eq("40", sp.Symbol("C_{11}"), sp.Symbol("C_{11,elem}") + q1 * sp.Symbol("C_{113}") + q2 * sp.Symbol("C_{114}"),
            "antiderivative of C'_11 (paper's C114 = ours / omega0)")
     ctx.eq("40a", sp.Symbol("C_{11,elem}"), C11_elem, "elementary part of C11")
-    ctx.eq("40b", sp.Symbol("K"), sp.Symbol(r"\operatorname{Re}") * Kc,
+    ctx.eq("40b", sp.Symbol("K"), K,
            r"$K' = e^{-\beta\tau/2}\sin^{1/2}(\omega_0\tau)$, principal 2F1 on $|z| = 1$")
     ctx.eq("40c", sp.Symbol("C_{124}"), J_c.subs(Kf, sp.Symbol("K")), "reduction to K")
     ctx.eq("40d", sp.Symbol("C_{113}"), sp.Symbol("K") - sp.Symbol("C_{124}"), "reduction to K")
@@ -345,15 +344,12 @@ def derive(ctx: Context) -> dict:
     ctx.eq("41", sp.Symbol("C_{12}"), sp.Symbol("C_{12,elem}") - q1 * sp.Symbol("C_{123}") - q2 * sp.Symbol("C_{124}"),
            "antiderivative of C'_12 (paper's C124 = ours / omega0)")
     ctx.eq("41a", sp.Symbol("C_{12,elem}"), C12_elem, "elementary part of C12")
-    ctx.eq("42a", sp.Symbol("K(0^+)"), sp.Symbol(r"\operatorname{Re}") * Kc0, "Gauss's sum")
-    ctx.eq("42b", sp.Symbol("C_{11}(0)"), sub0_elem(C11_elem) + sp.Symbol("K(0^+)") * sp.simplify(q1 * (1 - 15 * w**2 / (beta**2 + 25 * w**2)) + q2 * beta / (5 * w) * 15 * w**2 / (beta**2 + 25 * w**2)),
-           "value at tau -> 0+")
-    ctx.eq("42c", sp.Symbol("C_{12}(0)"), sub0_elem(C12_elem) + sp.Symbol("K(0^+)") * sp.simplify(-q1 * beta / (5 * w) * 15 * w**2 / (beta**2 + 25 * w**2) - q2 * 15 * w**2 / (beta**2 + 25 * w**2)),
-           "value at tau -> 0+")
+    ctx.eq("42a", sp.Symbol("K_0"), K0, "K at tau -> 0+, by Gauss's sum")
+    ctx.eq("42b", sp.Symbol("C_{11}(0)"), sp.factor(C11_0.subs(K0, sp.Symbol("K_0"))), "value at tau -> 0+")
+    ctx.eq("42c", sp.Symbol("C_{12}(0)"), sp.factor(C12_0.subs(K0, sp.Symbol("K_0"))), "value at tau -> 0+")
     ctx.eq("42", sp.Symbol(r"\bar\delta"), delta0 + sp.exp(-beta * tau) * ((sp.Symbol("C_{11}(\\tau)") - sp.Symbol("C_{11}(0)")) * s
                                                                          + (sp.Symbol("C_{12}(\\tau)") - sp.Symbol("C_{12}(0)")) * c),
            "first-order HAM solution")
-    del G
     return set(ctx.expr)
 
 

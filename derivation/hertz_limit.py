@@ -9,7 +9,7 @@ F = (m V0 / T) F-bar) and Hertz's delta_m = T V0 (5/4)^{2/5} (3):
 
     F_hunter = (1.068^2 / dm) sin(1.068 tau / dm),   F_reed = dm^{3/2} sin^{3/2}(1.068 tau / dm),
 
-dm = (5/4)^{2/5}: 1.0432 sin(0.97680 tau) and 1.1433 sin^{3/2}(0.97677 tau) (the printed (53)
+dm = (5/4)^{2/5}: 1.0432 sin(0.97680 tau) and 1.1433 sin^{3/2}(0.97680 tau) (the printed (53)
 has sin^3). The force is taken positive in compression, as F-bar = delta-bar^{3/2} (45).
 """
 from __future__ import annotations

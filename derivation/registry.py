@@ -46,7 +46,8 @@ class Derivation:
         :mod:`.scaling` (``E1``, ``nu1``, ``rho1``, ``E2``, ``nu2``, ``rho2``, ``R``, ``H``,
         ``V0``, ``m``, ``Estar``, ``int_F2``).
     expr : dict
-        name -> SymPy expression (see ``REQUIRED``).
+        name -> SymPy expression (see ``REQUIRED``); ``dm_interp_max_rel_error`` and
+        ``dm_interp_argmax`` are plain floats (measured, not derived).
     equations : dict
         paper equation number -> (LaTeX of the derived equation, description).
     seconds : float
@@ -83,7 +84,12 @@ def run(checks: bool = True, echo=None) -> Derivation:
                       time.perf_counter() - t0)
 
 
-@functools.lru_cache(maxsize=None)
 def derive(checks: bool = True) -> Derivation:
-    """The whole derivation, cached per process. See :class:`Derivation`."""
+    """The whole derivation, cached per process (``derive()`` and ``derive(checks=True)`` share
+    one entry). See :class:`Derivation`."""
+    return _derive_cached(bool(checks))
+
+
+@functools.lru_cache(maxsize=None)
+def _derive_cached(checks: bool) -> Derivation:
     return run(checks=checks)

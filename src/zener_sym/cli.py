@@ -14,6 +14,7 @@ import sys
 COMMAND_MODULES = [
     "report",
     "generate_cmd",
+    "derive_cmd",
 ]
 
 

@@ -47,9 +47,17 @@ def model_comparison_section() -> str:
             f"max |F - F_exact| over the contact / exact F_m); {dt:.1f} s.\n\n" + env)
 
 
+def derivation_section() -> str:
+    # imported when the section runs: the derivation is offline code, not on the runtime path
+    from .derive_cmd import report_section
+
+    return report_section()
+
+
 #: (title, callable returning markdown). Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
+    ("derivation", derivation_section),
     ("model comparison", model_comparison_section),
 ]
 

@@ -177,7 +177,8 @@ def summary(lam):
 _NP_HAM1 = '''
 
 def _K(beta, omega0, tau):
-    """Square-root integrals K_cc, K_sc, K_sc at a = beta / (2 omega0), theta = omega0 tau; frozen at
+    """Square-root integrals K_cc, K_sc, K_ss at a = beta / (2 omega0), theta = omega0 tau, by
+    Gauss-Jacobi quadrature (zener_sym.sqrt_quad: why not scipy hyp2f1 is explained there); frozen at
     theta = pi (delta0 < 0 beyond: its contact force and sqrt(delta0) are zero)."""
 {a_block}
     K = sqrt_integrals(a, omega0 * tau, ("cc", "sc", "ss"))

@@ -393,10 +393,13 @@ def _J(m, a, theta):
 
 def _K(names, a, theta):
     """K_g(a, theta) from J_0, J_1, J_2 (cc, sc, ss, s), frozen at theta >= pi. Extra digits cover
-    the cancellation of F(theta) - F(0) at small theta."""
+    the cancellations at small theta (F(theta) - F(0) ~ theta^(3/2), and K_ss ~ theta^(7/2) from
+    Re J_0 - Re J_2) and the 2F1 evaluation near z = 1 at theta -> pi."""
     guard = 15
     if 0 < theta < 1:
-        guard += int(-1.5 * mpmath.log10(theta)) + 1
+        guard += int(-3.5 * mpmath.log10(theta)) + 1
+    if 0 < mpmath.pi - theta < 1:
+        guard += int(-1.5 * mpmath.log10(mpmath.pi - theta)) + 1
     with mpmath.workdps(mpmath.mp.dps + guard):
         theta = min(mpmath.mpf(theta), +mpmath.pi)
         J = {{}}

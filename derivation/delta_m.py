@@ -116,7 +116,10 @@ def derive(ctx: Context) -> dict:
     dm = sp.Symbol(r"\bar\delta_m")
     ctx.eq("17", sp.Symbol(r"y\,\frac{dy}{d\bar\delta}"),
            sp.Symbol(r"-\tfrac{3}{2}\lambda\sqrt{\bar\delta}\,y - \bar\delta^{3/2}"), "Eq. (10) with y = delta'")
+    ctx.eq("18", sp.Symbol(r"\frac{dy}{d\bar\delta} + \tfrac{3}{2}\lambda\sqrt{\bar\delta}"), 0,
+           "(17) divided by y, lambda -> oo")
     ctx.eq("19", sp.Symbol("y"), sol19, "asymptote lambda -> oo")
+    ctx.eq("21", sp.Symbol(r"y\,\frac{dy}{d\bar\delta} + \bar\delta^{3/2}"), 0, "(17) with lambda -> 0")
     ctx.eq("20", dm ** sp.Rational(-3, 2), lam, "lambda -> oo")
     ctx.eq("22", sp.Symbol("y"), sp.sqrt(sol22), "asymptote lambda -> 0")
     ctx.eq("23", dm, dm0[0], "lambda -> 0")

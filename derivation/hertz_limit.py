@@ -39,7 +39,10 @@ def derive(ctx: Context) -> dict:
                        f"omega0 = {omega0_lam0} = {sp.N(omega0_lam0, 8)}"))
     sub0 = {lam: 0, beta: 0}
     delta0_lam0 = E["delta0"].subs(sub0)
-    delta1_lam0 = sp.simplify(E["delta1"].subs(sub0))
+    # collect to the paper's shape sin/(2 omega0) + (...) sin + (...) cos, using cos^2 = 1 - sin^2
+    s, c = sp.sin(w * tau), sp.cos(w * tau)
+    d1 = sp.expand(sp.expand(sp.expand_trig(sp.simplify(E["delta1"].subs(sub0)))).subs(c**2, 1 - s**2))
+    delta1_lam0 = sp.collect(sp.powsimp(d1), c)
 
     def same_as_general():
         f = sp.lambdify((w, tau), delta1_lam0, "mpmath")

@@ -107,6 +107,8 @@ def derive(ctx: Context) -> dict:
     ctx.eq("27", (D0 + p * D1) ** three_half, want_32 + sp.O(p**3), "Taylor expansion in p")
     ctx.eq("28", sp.Symbol(r"\ddot{\bar\delta}_0 + k\lambda\dot{\bar\delta}_0 + k\bar\delta_0"), 0,
            "order p^0, with (29): delta0(0) = 0, delta0'(0) = 1")
+    ctx.eq("29", sp.Symbol(r"\bar\delta_0(0) = 0,\quad \dot{\bar\delta}_0(0)"), 1, "initial conditions at order p^0")
+    ctx.eq("31", sp.Symbol(r"\bar\delta_1(0) = 0,\quad \dot{\bar\delta}_1(0)"), 0, "initial conditions at order p^1")
     ctx.eq("30", sp.Symbol(r"\ddot{\bar\delta}_1 + k\lambda\dot{\bar\delta}_1 + k\bar\delta_1"),
            sp.Symbol(r"-\left(\ddot{\bar\delta}_0 + \tfrac{3}{2}\lambda\sqrt{\bar\delta_0}\,"
                      r"\dot{\bar\delta}_0 + \bar\delta_0^{3/2}\right)"),

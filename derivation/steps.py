@@ -13,7 +13,8 @@ from dataclasses import dataclass, field
 import mpmath
 import sympy as sp
 
-__all__ = ["Step", "Log", "SYMBOLS", "symbolic_zero", "mp_max_rel_residual", "MP_DPS"]
+__all__ = ["Step", "Log", "Context", "SYMBOLS", "symbolic_zero", "max_rel_residual", "mp_max_rel_residual",
+           "MP_DPS", "latex", "run_part"]
 
 #: Working precision (decimal digits) of every mpmath check.
 MP_DPS = 40
@@ -101,21 +102,19 @@ def symbolic_zero(expr, *, rewrite_trig: bool = False) -> tuple[bool, str]:
     return e == 0, "simplifies to 0" if e == 0 else f"left over: {sp.sstr(e)[:200]}"
 
 
-def mp_max_rel_residual(lhs, rhs, points, tol) -> tuple[bool, str]:
-    """Largest |lhs - rhs| / max(|rhs|, tiny) over ``points`` (mpmath callables), against ``tol``.
-
-    ``lhs`` and ``rhs`` are callables of one point; a point where rhs is 0 uses the absolute
-    residual. Returns (passed, detail).
-    """
-    worst, where = mpmath.mpf(0), None
+def max_rel_residual(lhs, rhs, points):
+    """Largest |lhs(x) - rhs(x)| / |rhs(x)| over ``points`` (absolute where rhs(x) is 0)."""
+    worst = mpmath.mpf(0)
     for x in points:
         a, b = lhs(x), rhs(x)
-        scale = abs(b) if b != 0 else mpmath.mpf(1)
-        r = abs(a - b) / scale
-        if r > worst or where is None:
-            worst, where = r, x
-    passed = worst <= tol
-    return passed, f"max rel residual {mpmath.nstr(worst, 3)} over {len(points)} points (tol {tol:g})"
+        worst = max(worst, abs(a - b) / (abs(b) if b != 0 else 1))
+    return worst
+
+
+def mp_max_rel_residual(lhs, rhs, points, tol) -> tuple[bool, str]:
+    """:func:`max_rel_residual` against ``tol``, as (passed, detail)."""
+    worst = max_rel_residual(lhs, rhs, points)
+    return worst <= tol, f"max rel residual {mpmath.nstr(worst, 3)} over {len(points)} points (tol {tol:g})"
 
 
 @dataclass

@@ -41,7 +41,6 @@ import sympy as sp
 __all__ = ["ham_expressions", "SYMBOLS", "P3"]
 
 tau = sp.Symbol("tau", nonnegative=True)
-s_ = sp.Symbol("s", nonnegative=True)
 lam = sp.Symbol("lam", nonnegative=True)
 beta = sp.Symbol("beta", positive=True)
 omega0 = sp.Symbol("omega0", positive=True)

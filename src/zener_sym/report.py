@@ -73,6 +73,18 @@ def bench_section() -> str:
             "work_precision_*.png, stability.png).\n\n### Speed targets" + tail)
 
 
+def model_comparison_section() -> str:
+    """Every model against exact at the paper's lambdas, then the HAM error envelopes."""
+    from .ham_envelopes import comparison_markdown, envelope_markdown
+
+    t0 = time.perf_counter()
+    env = envelope_markdown()
+    dt = time.perf_counter() - t0
+    return (comparison_markdown(PAPER_LAMBDAS) + "\n\n### Error envelopes of ham0 and ham1\n\n"
+            "Largest relative error against exact over lambda = 0, 0.1, ..., 2.4 (force history: "
+            f"max |F - F_exact| over the contact / exact F_m); {dt:.1f} s.\n\n" + env)
+
+
 def derivation_section() -> str:
     # imported when the section runs: the derivation is offline code, not on the runtime path
     from .derive_cmd import report_section
@@ -94,6 +106,7 @@ SECTIONS = [
     ("exact", exact_section),
     ("derivation", derivation_section),
     ("audit", _audit_section),
+    ("model comparison", model_comparison_section),
     ("scene", scene_section),
     ("exact-fast", _exact_fast_section),
     ("bench", bench_section),

@@ -2,6 +2,8 @@
 from .base import (HISTORY_FIELDS, REGISTRY, SUMMARY_FIELDS, FieldUnavailableError, Model,
                    get_model, register)
 from . import exact  # noqa: F401  (registers "exact")
+from . import ham  # noqa: F401  (registers "ham0", "ham1")
+from . import pulses  # noqa: F401  (registers "hertz", "hunter", "reed", "oneway")
 
 __all__ = ["Model", "REGISTRY", "register", "get_model", "SUMMARY_FIELDS", "HISTORY_FIELDS",
            "FieldUnavailableError"]

@@ -1,0 +1,159 @@
+"""Hand-written explicit formulas of the paper, corrected, as a second route to the generated kernels.
+
+Written by hand from the derivation's results (not from the printed paper, whose transcription has
+wrong exponents), in plain numpy; tests compare them with the generated kernels and the exact model.
+
+Zeroth order (Eqs. 23-25, 32-35, 54, 58, 60, 61, 79):
+
+    delta_m(0) = (5/4)^{2/5},   k = (lambda + (5/4)^{-3/5})^{-1/3},   beta = k lambda / 2,
+    omega0 = sqrt(k - beta^2),   delta0 = exp(-beta tau) sin(omega0 tau) / omega0,
+    tau_d = pi / omega0,   tau_dc = atan2(omega0, beta) / omega0,   tau_dr = tau_d - tau_dc,
+    eta = (pi - phi) / phi with phi = atan2(omega0, beta),   e = exp(-pi beta / omega0),
+    delta_m0 = delta0(tau_dc) = exp(-beta tau_dc) / sqrt(k).
+
+The printed (59)-(61), (80) and (81) carry (5/4)^{3/5} or (5/4)^{-1/3} where (5/4)^{-3/5} belongs.
+
+Hunter (52) and Reed (53), from Eqs. (3)-(6) and the scaling delta-bar = delta / (T V0),
+tau = t / T, F-bar = F T / (m* V0): Hunter's sine delta = delta_m sin(1.068 V0 t / delta_m) with
+the Hertz maximum delta_m (3), i.e. delta-bar_m = (5/4)^{2/5} = 1.09336, has the dimensionless
+frequency Omega = 1.068 / delta-bar_m = 0.97681 (printed 0.977). Newton's law (5) gives
+F-bar = delta-bar_m Omega^2 sin(Omega tau) (amplitude 1.04322, printed 1.043); Reed's Hertz law (6)
+gives F-bar = delta-bar_m^{3/2} sin^{3/2}(Omega tau) (amplitude 1.14328, printed "1.143 sin^3": the
+exponent is 3/2). The number 1.068 is Hunter's (pi / 1.068 = 2.94 is Hertz's duration factor in
+Eq. 2), kept as his model's input.
+
+Fits: (24) delta_m^{-3/2} = lambda + (5/4)^{-3/5}; (55) tau_d = tau_Hertz exp(0.23 lambda^1.80)
+with the paper's tau_Hertz = 3.214; (70) xi = 1 - exp(-2.755 lambda).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.optimize import brentq
+
+__all__ = ["DELTA_M_HERTZ", "LAM_CRIT", "k", "beta", "omega0", "delta0", "delta0_dot", "tau_d0",
+           "tau_dc0", "tau_dr0", "eta0", "e0", "e0_paper_form", "delta_m0", "F_m0",
+           "OMEGA_HUNTER", "A_HUNTER", "A_REED", "F_hunter", "F_reed", "delta_m_fit_24",
+           "tau_d_fit_55", "xi_fit_70", "TAU_HERTZ_PAPER"]
+
+#: Hertz's maximum compression at lambda = 0, Eq. (23): 1 - (4/5) delta^{5/2} = 0
+DELTA_M_HERTZ = 1.25 ** 0.4
+_C = 1.25 ** -0.6  # delta_m(0)^{-3/2}
+
+
+def k(lam):
+    """Eq. (25): k = sqrt(delta_m) with delta_m from the interpolation (24)."""
+    return (np.asarray(lam, dtype=float) + _C) ** (-1.0 / 3.0)
+
+
+def beta(lam):
+    """Eq. (32): beta = k lambda / 2."""
+    lam = np.asarray(lam, dtype=float)
+    return k(lam) * lam / 2.0
+
+
+def omega0(lam):
+    """Eq. (33): omega0 = sqrt(4k - k^2 lambda^2) / 2, written k (4 - k lambda^2) / 4 inside."""
+    lam = np.asarray(lam, dtype=float)
+    kk = k(lam)
+    return np.sqrt(kk * (4.0 - kk * lam * lam)) / 2.0
+
+
+#: Critical lambda of Eq. (81): k lambda^2 = 4, i.e. lambda^6 = 64 (lambda + (5/4)^{-3/5})
+LAM_CRIT = brentq(lambda x: x**6 - 64.0 * (x + _C), 2.0, 3.0, xtol=1e-16, rtol=8.9e-16)
+
+
+def delta0(tau, lam):
+    """Eq. (35)."""
+    w, b = omega0(lam), beta(lam)
+    return np.exp(-b * tau) * np.sin(w * tau) / w
+
+
+def delta0_dot(tau, lam):
+    """Eq. (56)."""
+    w, b = omega0(lam), beta(lam)
+    return np.exp(-b * tau) * (np.cos(w * tau) - b / w * np.sin(w * tau))
+
+
+def tau_d0(lam):
+    """Eq. (54): pi / omega0."""
+    return np.pi / omega0(lam)
+
+
+def tau_dc0(lam):
+    """Eq. (58) as atan2 (regular at beta = 0)."""
+    return np.arctan2(omega0(lam), beta(lam)) / omega0(lam)
+
+
+def tau_dr0(lam):
+    """Eq. (60)."""
+    return tau_d0(lam) - tau_dc0(lam)
+
+
+def eta0(lam):
+    """Eq. (61)."""
+    phi = np.arctan2(omega0(lam), beta(lam))
+    return np.pi / phi - 1.0
+
+
+def e0(lam):
+    """Eq. (79): e = -delta0'(pi/omega0) = exp(-pi beta / omega0)."""
+    return np.exp(-np.pi * beta(lam) / omega0(lam))
+
+
+def e0_paper_form(lam):
+    """Eq. (79) as printed: exp(-pi lambda / sqrt(4/k - lambda^2)) (same value)."""
+    lam = np.asarray(lam, dtype=float)
+    return np.exp(-np.pi * lam / np.sqrt(4.0 / k(lam) - lam * lam))
+
+
+def delta_m0(lam):
+    """delta0 at tau_dc: sin(omega0 tau_dc) = omega0 / sqrt(k)."""
+    return np.exp(-beta(lam) * tau_dc0(lam)) / np.sqrt(k(lam))
+
+
+def F_m0(lam):
+    """Zeroth-order maximum force delta_m0^{3/2}."""
+    return delta_m0(lam) ** 1.5
+
+
+OMEGA_HUNTER = 1.068 / DELTA_M_HERTZ
+A_HUNTER = DELTA_M_HERTZ * OMEGA_HUNTER**2
+A_REED = DELTA_M_HERTZ**1.5
+
+
+def F_hunter(tau):
+    """Eq. (52): A_HUNTER sin(OMEGA_HUNTER tau) for 0 <= tau <= pi/OMEGA_HUNTER, else 0."""
+    tau = np.asarray(tau, dtype=float)
+    x = OMEGA_HUNTER * tau
+    return np.where(x <= np.pi, A_HUNTER * np.sin(np.clip(x, 0.0, np.pi)), 0.0)
+
+
+def F_reed(tau):
+    """Eq. (53): A_REED sin^{3/2}(OMEGA_HUNTER tau) on the contact, else 0."""
+    tau = np.asarray(tau, dtype=float)
+    x = OMEGA_HUNTER * tau
+    return np.where(x <= np.pi, A_REED * np.sin(np.clip(x, 0.0, np.pi)) ** 1.5, 0.0)
+
+
+def delta_m_fit_24(lam):
+    """Eq. (24): delta_m = (lambda + (5/4)^{-3/5})^{-2/3}."""
+    return (np.asarray(lam, dtype=float) + _C) ** (-2.0 / 3.0)
+
+
+TAU_HERTZ_PAPER = 3.214
+
+
+def tau_d_fit_55(lam):
+    """Eq. (55): tau_Hertz exp(0.23 lambda^1.80) with the paper's tau_Hertz = 3.214."""
+    return TAU_HERTZ_PAPER * np.exp(0.23 * np.asarray(lam, dtype=float) ** 1.80)
+
+
+def xi_fit_70(lam):
+    """Eq. (70): xi = 1 - exp(-2.755 lambda)."""
+    return 1.0 - np.exp(-2.755 * np.asarray(lam, dtype=float))
+
+
+# integrals of the sinusoidal pulses over their contact, used by the pulse models
+_INT_SIN32 = math.sqrt(math.pi) * math.gamma(1.25) / math.gamma(1.75)  # int_0^pi sin^{3/2}

@@ -1,0 +1,91 @@
+"""Numerical glue for the generated HAM kernels: a stable P3, vectorised root finding, contact
+integrals. Hand-written (algorithms, not formulas); the generated numpy modules call it (numpy only; the
+mpmath counterparts are in ``ham_numerics_mp``).
+
+* ``p3(x) = (sin x - x cos x) / x^3``: the elementary part of delta1 is written with it, so that
+  tau -> 0 and omega0 -> 0 lose no digits. Series below |x| < 1/2, direct formula above.
+* ``first_root``: the first sign change of f on a scan grid, then bisection to a few ulps, all
+  lambda values at once (no Python loop over points; the loop is over bisection steps).
+* ``contact_integral``: integral of a function of (tau, lam) over [A, B] with the smoothstep map
+  tau = A + (B - A) v^2 (3 - 2 v) and Gauss-Legendre in v. The map's derivative vanishes at both
+  ends, which turns the endpoint behaviours of the force, (tau - A)^{3/2} at the start and the end
+  of contact and (pi/omega0 - tau)^{3/2} where the zeroth-order sqrt terms switch off, into
+  analytic integrands in v, so Gauss-Legendre converges geometrically.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["p3", "first_root", "contact_integral", "N_GL"]
+
+# Taylor coefficients of P3: sum_j (-1)^j 2 (j + 1) x^{2j} / (2j + 3)!
+_P3_COEF = [(-1) ** j * 2.0 * (j + 1) / math.factorial(2 * j + 3) for j in range(12)]
+
+
+def p3(x):
+    """(sin x - x cos x)/x^3 for a float array, accurate to rounding (P3(0) = 1/3)."""
+    x = np.asarray(x, dtype=float)
+    small = np.abs(x) < 0.5
+    x2 = x * x
+    series = np.zeros_like(x)
+    for c in reversed(_P3_COEF):  # Horner in x^2; 12 terms reach 1e-19 at |x| = 1/2
+        series = series * x2 + c
+    xs = np.where(small, 1.0, x)
+    direct = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
+    return np.where(small, series, direct)
+
+
+def first_root(fun, lam, lo, hi, n_scan=64, what="root"):
+    """First zero of fun(tau, lam) in (lo, hi], per lambda (1-D arrays), fun(lo) > 0 assumed.
+
+    Scans about 2 n_scan cells (uniform and geometric from lo), then bisects the first cell where fun <= 0. Raises ValueError, naming
+    lambda, if there is no sign change.
+    """
+    lam = np.asarray(lam, dtype=float)
+    lo = np.asarray(lo, dtype=float)
+    hi = np.asarray(hi, dtype=float)
+    # uniform cells plus geometric ones near lo: omega0 -> 0 stretches [lo, hi] to ~1/omega0
+    # while the roots stay at tau = O(1)
+    v = np.unique(np.concatenate([np.linspace(0.0, 1.0, n_scan + 1), np.geomspace(1e-10, 1.0, n_scan)]))
+    grid = lo[:, None] + (hi - lo)[:, None] * v
+    vals = fun(grid, lam[:, None])
+    neg = vals <= 0.0
+    neg[:, 0] = False
+    found = neg.any(axis=1)
+    if not found.all():
+        bad = lam[~found][0]
+        raise ValueError(f"no {what} found between tau = {lo[~found][0]:.6g} and "
+                         f"{hi[~found][0]:.6g} at lambda = {bad!r}")
+    j = np.argmax(neg, axis=1)
+    rows = np.arange(lam.size)
+    a, b = grid[rows, j - 1], grid[rows, j]
+    for _ in range(200):
+        mid = 0.5 * (a + b)
+        done = (mid <= a) | (mid >= b)
+        if done.all():
+            break
+        fm = fun(mid, lam)
+        pos = fm > 0.0
+        a = np.where(pos & ~done, mid, a)
+        b = np.where(~pos & ~done, mid, b)
+    return 0.5 * (a + b)
+
+
+N_GL = 48
+_gx, _gw = np.polynomial.legendre.leggauss(N_GL)
+_V = (1.0 + _gx) / 2.0
+_WV = _gw / 2.0
+_MAP = _V * _V * (3.0 - 2.0 * _V)
+_DMAP = 6.0 * _V * (1.0 - _V)
+
+
+def contact_integral(fun, A, B, lam):
+    """integral_A^B fun(tau, lam) dtau for arrays A <= B, lam (same shape), smoothstep + GL."""
+    A, B, lam = np.broadcast_arrays(np.asarray(A, float), np.asarray(B, float),
+                                    np.asarray(lam, float))
+    L = np.maximum(B - A, 0.0)
+    t = A[..., None] + L[..., None] * _MAP
+    vals = fun(t, lam[..., None])
+    return L * np.sum(vals * (_DMAP * _WV), axis=-1)

@@ -1,0 +1,155 @@
+"""The homotopy-analysis models ham0 (Eq. 35) and ham1 (Eq. 42) on the generated kernels.
+
+Both take ``backend="numpy"`` (default, float64, vectorised) or ``backend="mpmath"`` with ``dps``
+(closed forms in 2F1 and Gamma at any precision; a Python loop over points, slow). Valid for
+0 <= lambda < lam_crit = 2.44243892998... where omega0 is real (Eq. 81).
+
+Continuation (first order): past pi/omega0 the zeroth-order compression delta0 is negative, so its
+contact force and sqrt(delta0) are zero; the square-root terms of the forcing (36) vanish and the
+integrals C11, C12 keep their values at pi/omega0, while the elementary part continues. The
+first-order contact ends at the first zero of delta0 + delta1 after its maximum (root finding),
+after which delta and the force are 0 and the impulse keeps its final value. ``xi`` is
+2 I - I^2 (Eq. 69) with the model's impulse.
+"""
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+
+from .base import Model, register
+
+
+def _gen(name):
+    """A generated module, imported on first use: ``zener-sym generate`` must run (and rewrite
+    generated/) even when the committed kernels are stale or broken."""
+    import importlib
+
+    return importlib.import_module(f"zener_sym.generated.{name}")
+
+
+def _backend(options):
+    backend = options.get("backend", "numpy")
+    if backend not in ("numpy", "mpmath"):
+        raise ValueError(f"unknown backend {backend!r}; allowed: 'numpy', 'mpmath'")
+    dps = options.get("dps")
+    if dps is not None and backend != "mpmath":
+        raise ValueError("option 'dps' goes with backend='mpmath'")
+    if dps is not None and (not isinstance(dps, (int, np.integer)) or dps < 15):
+        raise ValueError(f"dps must be an integer >= 15, got {dps!r}")
+    return backend, (30 if dps is None else int(dps))
+
+
+_SUMMARY = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2",
+            "xi")
+
+
+class _HamModel(Model):
+    summary_fields = _SUMMARY
+    history_fields = ("delta", "velocity", "force", "impulse")
+    bound_reason = ("lam_crit = 2.44243892998...: omega0 = sqrt(4k - k^2 lambda^2)/2 is real only "
+                    "below it, Eq. (81)")
+    options = ("backend", "dps")
+
+    @property
+    def lam_bound(self):
+        """lam_crit from the generated module (emitted from the derivation)."""
+        return _gen("ham1_numpy").LAM_CRIT
+
+    @staticmethod
+    def _finish(d):
+        out = {f: np.asarray(d[f], dtype=float) for f in ("delta_m", "tau_dc", "tau_d", "e", "F_m",
+                                                           "impulse", "int_F2")}
+        out["tau_dr"] = out["tau_d"] - out["tau_dc"]
+        out["eta"] = out["tau_dr"] / out["tau_dc"]
+        out["xi"] = 2.0 * out["impulse"] - out["impulse"] ** 2
+        return out
+
+
+class Ham0(_HamModel):
+    name = "ham0"
+    description = "zeroth-order HAM solution, Eq. (35): damped sine, closed forms (54)-(61), (79)"
+
+    def _summary(self, lam, **options):
+        backend, dps = _backend(options)
+        h0, m0 = _gen("ham0_numpy"), _gen("ham0_mpmath")
+        if backend == "numpy":
+            return self._finish(h0.summary(lam))
+        rows = [m0.summary(float(x), dps) for x in lam]
+        return self._finish({f: [float(r[f]) for r in rows] for f in rows[0]})
+
+    def _history(self, lam, tau, **options):
+        backend, dps = _backend(options)
+        h0, m0 = _gen("ham0_numpy"), _gen("ham0_mpmath")
+        if backend == "numpy":
+            k, beta, omega0 = h0.params(lam)
+            on = omega0 * tau <= np.pi
+            d = np.where(on, np.maximum(h0.delta(tau, lam), 0.0), 0.0)
+            imp = h0.impulse(tau, lam)
+            force = h0.force(tau, lam)
+        else:
+            d, imp, force = (np.empty(tau.shape) for _ in range(3))
+            for i in np.ndindex(tau.shape):
+                t, x = float(tau[i]), float(lam[i])
+                with mpmath.workdps(dps):
+                    k, beta, omega0 = m0.params(x)
+                    dd = m0.delta(t, x)
+                    d[i] = float(dd) if (omega0 * t <= mpmath.pi and dd > 0) else 0.0
+                    imp[i] = float(m0.impulse(t, x))
+                    force[i] = float(m0.force(t, x))
+        return {"delta": d, "force": force, "impulse": imp, "velocity": 1.0 - imp}
+
+
+class Ham1(_HamModel):
+    name = "ham1"
+    description = ("first-order HAM solution, Eq. (42): delta0 + delta1, contact end by root "
+                   "finding, impulse by quadrature of the force")
+
+    def _summary(self, lam, **options):
+        backend, dps = _backend(options)
+        h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
+        if backend == "numpy":
+            return self._finish(h1.summary(lam))
+        rows = []
+        for x in lam:
+            with mpmath.workdps(dps):
+                tdc = m1.compression_end(float(x))
+                td = m1.contact_end(float(x))
+                dm = m1.delta(tdc, float(x))
+                imp = m1.impulse(td, float(x), tau_d=td)
+                k, beta, omega0 = m1.params(float(x))
+                tpi = mpmath.pi / omega0
+                f2 = lambda t: m1.force(t, float(x)) ** 2  # noqa: E731
+                from ..ham_numerics_mp import contact_integral_mp
+
+                J = contact_integral_mp(f2, 0, min(td, tpi)) + contact_integral_mp(f2, tpi, max(td, tpi))
+                e = -m1.delta_dot(td, float(x))
+                rows.append(dict(delta_m=dm, tau_dc=tdc, tau_d=td, e=e, F_m=dm ** 1.5, impulse=imp,
+                                 int_F2=J))
+        return self._finish({f: [float(r[f]) for r in rows] for f in rows[0]})
+
+    def _history(self, lam, tau, **options):
+        backend, dps = _backend(options)
+        h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
+        u, inv = np.unique(lam, return_inverse=True)
+        td_u = h1.contact_end(u)
+        if backend == "numpy":
+            td = td_u[inv].reshape(lam.shape)
+            on = tau < td
+            d = np.where(on, np.maximum(h1.delta(tau, lam), 0.0), 0.0)
+            imp = h1.impulse(tau, lam, tau_d=td)
+            return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
+        d, imp = np.empty(tau.shape), np.empty(tau.shape)
+        with mpmath.workdps(dps):
+            td_mp = {float(x): m1.contact_end(float(x), guess=float(t))
+                     for x, t in zip(u, td_u)}
+            for i in np.ndindex(tau.shape):
+                t, x = float(tau[i]), float(lam[i])
+                tdx = td_mp[x]
+                dd = m1.delta(t, x) if t < tdx else mpmath.mpf(0)
+                d[i] = float(max(dd, 0))
+                imp[i] = float(m1.impulse(t, x, tau_d=tdx))
+        return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
+
+
+register(Ham0())
+register(Ham1())

@@ -1,0 +1,127 @@
+"""Pulse models that ignore (hertz, hunter, reed) or one-way couple (oneway) the plate.
+
+* ``hertz``: the rigid half-space, i.e. the exact solution of Eq. (10) at lambda = 0 whatever
+  lambda is given (lambda is ignored; every field is the lambda = 0 value).
+* ``hunter``: Hunter's sine, delta = delta_m sin(Omega tau), F = A sin(Omega tau) (Eq. 52);
+  ``reed``: Reed's F = delta_m^{3/2} sin^{3/2}(Omega tau) (Eq. 53); constants derived in
+  ``zener_sym.formulas``. Both are symmetric pulses of a rigid half-space: lambda is ignored, and
+  they give no restitution (e, xi): the pulse alone does not say what energy is lost.
+* ``oneway``: the Hertz pulse drives the plate without feeling it: xi = 2 lambda int F_Hertz^2
+  (the work of Eq. 74 in the scaling of Eq. 10), e = sqrt(1 - xi). It gives e, xi and the Hertz
+  pulse's int_F2; valid while xi <= 1, i.e. lambda <= 1 / (2 int F_Hertz^2) = 0.28899...
+"""
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from .. import formulas as fm
+from ..sqrt_quad import sqrt_integrals
+from .base import REGISTRY, Model, register
+
+
+@functools.lru_cache(maxsize=1)
+def _hertz_int_F2() -> float:
+    """int F_Hertz^2 over the Hertz contact, from the exact model at lambda = 0 (as hertz gives it)."""
+    return float(REGISTRY["exact"]._summary(np.zeros(1))["int_F2"][0])
+
+
+class Hertz(Model):
+    name = "hertz"
+    description = "rigid half-space: the exact lambda = 0 solution (lambda ignored)"
+    summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
+                      "int_F2", "xi")
+    history_fields = ("delta", "velocity", "force", "impulse")
+
+    # The exact model at lambda = 0 (its fast tables when it has them), so hertz and exact agree.
+    def _summary(self, lam, **options):
+        s = REGISTRY["exact"]._summary(np.zeros(1))
+        return {f: np.full(lam.shape, float(s[f][0])) for f in self.summary_fields if f != "lam"}
+
+    def _history(self, lam, tau, **options):
+        h = REGISTRY["exact"]._history(np.zeros(tau.shape), tau)
+        return {f: np.asarray(h[f], dtype=float) for f in self.history_fields}
+
+
+class _Sine(Model):
+    summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "F_m", "impulse",
+                      "int_F2")
+    history_fields = ("delta", "velocity", "force", "impulse")
+    Omega = fm.OMEGA_HUNTER
+
+    def _common(self, lam):
+        td = np.pi / self.Omega
+        return {"delta_m": np.full(lam.shape, fm.DELTA_M_HERTZ), "tau_d": np.full(lam.shape, td),
+                "tau_dc": np.full(lam.shape, td / 2), "tau_dr": np.full(lam.shape, td / 2),
+                "eta": np.ones(lam.shape)}
+
+    def _history(self, lam, tau, **options):
+        x = np.clip(self.Omega * tau, 0.0, np.pi)
+        delta = np.where(self.Omega * tau < np.pi, fm.DELTA_M_HERTZ * np.sin(x), 0.0)
+        imp = self._impulse(x)
+        return {"delta": delta, "force": self._force(tau), "impulse": imp, "velocity": 1.0 - imp}
+
+
+class Hunter(_Sine):
+    name = "hunter"
+    description = "Hunter's sinusoidal force pulse, Eq. (52) (lambda ignored)"
+
+    def _force(self, tau):
+        return fm.F_hunter(tau)
+
+    def _impulse(self, x):
+        return fm.A_HUNTER / self.Omega * (1.0 - np.cos(x))
+
+    def _summary(self, lam, **options):
+        out = self._common(lam)
+        out["F_m"] = np.full(lam.shape, fm.A_HUNTER)
+        out["impulse"] = np.full(lam.shape, 2.0 * fm.A_HUNTER / self.Omega)
+        out["int_F2"] = np.full(lam.shape, fm.A_HUNTER**2 * np.pi / 2.0 / self.Omega)
+        return out
+
+
+class Reed(_Sine):
+    name = "reed"
+    description = "Reed's sin^(3/2) force pulse, Eq. (53) (lambda ignored)"
+
+    def _force(self, tau):
+        return fm.F_reed(tau)
+
+    def _impulse(self, x):
+        # int_0^x sin^{3/2} = K_s(0, x) of the square-root integrals
+        return fm.A_REED / self.Omega * sqrt_integrals(np.zeros_like(x), x, ("s",))["s"]
+
+    def _summary(self, lam, **options):
+        out = self._common(lam)
+        out["F_m"] = np.full(lam.shape, fm.A_REED)
+        out["impulse"] = np.full(lam.shape, fm.A_REED / self.Omega * fm._INT_SIN32)
+        out["int_F2"] = np.full(lam.shape, fm.A_REED**2 * 4.0 / 3.0 / self.Omega)
+        return out
+
+
+class OneWay(Model):
+    name = "oneway"
+    description = ("one-way coupling: the Hertz pulse drives the plate, xi = 2 lambda int F_Hertz^2, "
+                   "e = sqrt(1 - xi)")
+    summary_fields = ("lam", "e", "xi", "int_F2")
+    history_fields = ()
+    bound_reason = "xi = 2 lambda int F_Hertz^2 exceeds 1 beyond it (e = sqrt(1 - xi))"
+
+    @property
+    def lam_bound(self):
+        return np.nextafter(1.0 / (2.0 * _hertz_int_F2()), np.inf)
+
+    def _summary(self, lam, **options):
+        J = _hertz_int_F2()
+        xi = 2.0 * lam * J
+        if np.any(xi > 1.0):
+            raise ValueError(f"oneway: xi = 2 lambda int F^2 > 1 at lambda = {lam[xi > 1][0]!r}; "
+                             f"allowed 0 <= lambda <= {1.0 / (2.0 * J):.12g}")
+        return {"e": np.sqrt(1.0 - xi), "xi": xi, "int_F2": np.full(lam.shape, J)}
+
+
+register(Hertz())
+register(Hunter())
+register(Reed())
+register(OneWay())

@@ -56,16 +56,16 @@ def as_lambda(lam, *, upper: float | None = None, model: str | None = None) -> n
     bad = ~np.isfinite(arr)
     if bad.any():
         raise ValueError(
-            f"lambda must be finite, got {arr[bad].ravel()[0]!r}; allowed: 0 <= lambda < infinity"
+            f"lambda must be finite, got {arr[bad].ravel()[0].item()!r}; allowed: 0 <= lambda < infinity"
         )
     if (arr < 0).any():
         raise ValueError(
-            f"lambda must be >= 0 (0 is a rigid half-space), got {arr[arr < 0].ravel()[0]!r}"
+            f"lambda must be >= 0 (0 is a rigid half-space), got {arr[arr < 0].ravel()[0].item()!r}"
         )
     if upper is not None and (arr >= upper).any():
         who = f"model {model!r}" if model else "this model"
         raise ValueError(
-            f"lambda = {arr[arr >= upper].ravel()[0]!r} is outside the validity of {who}: "
+            f"lambda = {arr[arr >= upper].ravel()[0].item()!r} is outside the validity of {who}: "
             f"allowed 0 <= lambda < {upper:.12g}"
         )
     return arr
@@ -76,7 +76,7 @@ def check_lambda_bound(arr: np.ndarray, upper: float, model: str, reason: str = 
     if (arr >= upper).any():
         extra = f" ({reason})" if reason else ""
         raise ValueError(
-            f"lambda = {arr[arr >= upper].ravel()[0]!r} is outside the validity of model "
+            f"lambda = {arr[arr >= upper].ravel()[0].item()!r} is outside the validity of model "
             f"{model!r}: allowed 0 <= lambda < {upper:.12g}{extra}"
         )
 
@@ -86,9 +86,9 @@ def as_tau(tau) -> np.ndarray:
     arr = _as_float_array(tau, "tau")
     bad = ~np.isfinite(arr)
     if bad.any():
-        raise ValueError(f"tau must be finite, got {arr[bad].ravel()[0]!r}; allowed: tau >= 0")
+        raise ValueError(f"tau must be finite, got {arr[bad].ravel()[0].item()!r}; allowed: tau >= 0")
     if (arr < 0).any():
         raise ValueError(
-            f"tau must be >= 0 (contact starts at tau = 0), got {arr[arr < 0].ravel()[0]!r}"
+            f"tau must be >= 0 (contact starts at tau = 0), got {arr[arr < 0].ravel()[0].item()!r}"
         )
     return arr

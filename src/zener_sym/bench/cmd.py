@@ -28,7 +28,7 @@ def representative(methods):
     return list(by_fam.values())
 
 
-def run(out: pathlib.Path, quick: bool = False, log=print) -> str:
+def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str:
     t_start = time.perf_counter()
     out.mkdir(parents=True, exist_ok=True)
     ref = reference.load()
@@ -105,6 +105,13 @@ def run(out: pathlib.Path, quick: bool = False, log=print) -> str:
     ]
     text = "\n".join(md)
     (out / "BENCHMARKS.md").write_text(text)
+    if markdown is not None:  # a copy elsewhere (e.g. the repo root), images linked relative to it
+        import os
+
+        rel = pathlib.Path(os.path.relpath(out.resolve(), markdown.resolve().parent))
+        linked = text.replace("](work_precision_", f"]({rel.as_posix()}/work_precision_")
+        linked = linked.replace("](stability.png)", f"]({rel.as_posix()}/stability.png)")
+        markdown.write_text(linked)
     log(f"wrote {out}/BENCHMARKS.md, charts and CSV tables in {elapsed:.0f} s")
     return text
 
@@ -113,6 +120,8 @@ def add_parser(sub) -> None:
     p = sub.add_parser("bench", help="work-precision charts, stability map and speed targets")
     p.add_argument("--quick", action="store_true", help="thin sweeps; finishes in under a minute")
     p.add_argument("--out", default="bench-out", help="output folder (default: bench-out)")
+    p.add_argument("--markdown", default=None,
+                   help="also write the summary here (e.g. BENCHMARKS.md), images linked to --out")
     p.add_argument("--build-reference", action="store_true",
                    help="recompute and cache the high-precision reference, then exit")
 
@@ -121,7 +130,8 @@ def add_parser(sub) -> None:
             reference.write_cache(reference.compute())
             print(f"wrote {reference.CACHE}")
             return 0
-        run(pathlib.Path(args.out), quick=args.quick)
+        run(pathlib.Path(args.out), quick=args.quick,
+            markdown=pathlib.Path(args.markdown) if args.markdown else None)
         return 0
 
     p.set_defaults(func=go)

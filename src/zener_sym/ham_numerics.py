@@ -11,6 +11,9 @@ mpmath counterparts are in ``ham_numerics_mp``).
   ends, which turns the endpoint behaviours of the force, (tau - A)^{3/2} at the start and the end
   of contact and (pi/omega0 - tau)^{3/2} where the zeroth-order sqrt terms switch off, into
   analytic integrands in v, so Gauss-Legendre converges geometrically.
+* ``cumulative_integral``: the same integrand in v, interpolated at N_CHEB Chebyshev points once
+  per lambda and integrated as a Chebyshev series, then evaluated at every requested upper limit.
+  A history of P times costs N_CHEB integrand evaluations per lambda instead of N_GL per time.
 """
 from __future__ import annotations
 
@@ -18,7 +21,7 @@ import math
 
 import numpy as np
 
-__all__ = ["p3", "first_root", "contact_integral", "N_GL"]
+__all__ = ["p3", "first_root", "contact_integral", "cumulative_integral", "N_GL", "N_CHEB"]
 
 # Taylor coefficients of P3: sum_j (-1)^j 2 (j + 1) x^{2j} / (2j + 3)!
 _P3_COEF = [(-1) ** j * 2.0 * (j + 1) / math.factorial(2 * j + 3) for j in range(12)]
@@ -89,3 +92,52 @@ def contact_integral(fun, A, B, lam):
     t = A[..., None] + L[..., None] * _MAP
     vals = fun(t, lam[..., None])
     return L * np.sum(vals * (_DMAP * _WV), axis=-1)
+
+
+N_CHEB = 64
+_CX = np.cos(np.pi * (np.arange(N_CHEB) + 0.5) / N_CHEB)  # Chebyshev points of the first kind
+_CV = (1.0 + _CX) / 2.0
+_CMAP = _CV * _CV * (3.0 - 2.0 * _CV)
+_CDMAP = 6.0 * _CV * (1.0 - _CV)
+_CFIT = np.linalg.inv(np.polynomial.chebyshev.chebvander(_CX, N_CHEB - 1))
+
+
+def _smoothstep_inverse(x):
+    """v in [0, 1] with v^2 (3 - 2 v) = x, for x in [0, 1]."""
+    return 0.5 - np.sin(np.arcsin(np.clip(1.0 - 2.0 * x, -1.0, 1.0)) / 3.0)
+
+
+def cumulative_integral(fun, A, B, lam, X):
+    """integral_A^X fun(tau, lam) dtau for A <= X <= B, where A and B depend on lam only.
+
+    The integrand in the smoothstep variable v (see ``contact_integral``) is interpolated at
+    N_CHEB Chebyshev points for each distinct lam and integrated as a Chebyshev series, which is
+    then evaluated at every X of that lam: no Python loop over points or over lam.
+    """
+    A, B, lam, X = np.broadcast_arrays(*(np.asarray(a, float) for a in (A, B, lam, X)))
+    shape = X.shape
+    lam_u, first, inv = np.unique(lam.ravel(), return_index=True, return_inverse=True)
+    a_u, b_u = A.ravel()[first], B.ravel()[first]
+    L_u = np.maximum(b_u - a_u, 0.0)
+    t = a_u[:, None] + L_u[:, None] * _CMAP
+    g = fun(t, lam_u[:, None]) * (L_u[:, None] * _CDMAP)
+    # Chebyshev coefficients in x = 2 v - 1, one row per lambda; einsum rather than a BLAS matmul,
+    # whose blocking would make a lambda's digits depend on which other lambdas share the call
+    coef = np.einsum("uj,kj->uk", g, _CFIT)
+    icoef = np.polynomial.chebyshev.chebint(coef, lbnd=-1.0, scl=0.5, axis=1)
+    L = L_u[inv]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        frac = np.where(L > 0.0, (X.ravel() - a_u[inv]) / L, 0.0)
+    x = 2.0 * _smoothstep_inverse(frac) - 1.0
+    c = icoef[inv]
+    out = _clenshaw(c, x) - _clenshaw(c, np.full_like(x, -1.0))  # exactly 0 at X = A
+    return np.where(L > 0.0, out, 0.0).reshape(shape)
+
+
+def _clenshaw(c, x):
+    """sum_j c[:, j] T_j(x), each point with its own coefficient row."""
+    b1 = np.zeros_like(x)
+    b2 = np.zeros_like(x)
+    for j in range(c.shape[1] - 1, 0, -1):
+        b1, b2 = 2.0 * x * b1 - b2 + c[:, j], b1
+    return x * b1 - b2 + c[:, 0]

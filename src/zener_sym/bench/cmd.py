@@ -19,9 +19,13 @@ def _md_table(header, rows):
 
 
 def representative(methods):
-    """One method per family for the stability map: the sweep's 1e-6 point, or the only one."""
+    """One method per family for the stability map: the sweep's 1e-6 point, or the only one.
+    mpmath backends are left out (about 1 s per point); they evaluate the same closed forms as
+    the numpy kernels, which the tests hold to 1e-10 of them."""
     by_fam = {}
     for m in methods:
+        if m.extra.get("stride", 1) > 1:
+            continue
         rt = m.extra.get("rtol")
         if m.family not in by_fam or (rt is not None and abs(np.log10(rt) + 6) < 0.01):
             by_fam[m.family] = m
@@ -71,7 +75,8 @@ def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str
         "(0.05 s with --quick), further calls are timed until that much time has passed and the "
         "median is kept, otherwise the first call's time is kept. Divided by the number of "
         "lambda. All methods are timed in one process, one after the other, so they share the "
-        "machine's load.",
+        "machine's load. The mpmath backends (about 1 s per history point) are measured on "
+        "every 10th history point and their force-history time is scaled by 10.",
         "",
         "## Work-precision charts",
         "",

@@ -254,12 +254,15 @@ def contact_end(lam, tau_dc=None):
 
 
 def _contact_integral(fun, tau, lam, tau_d):
-    """int_0^min(tau, tau_d) fun dtau, split at pi/omega0 (where the sqrt terms switch off)."""
+    """int_0^min(tau, tau_d) fun dtau, split at pi/omega0 (where the sqrt terms switch off); one
+    Chebyshev antiderivative per lambda serves every tau (zener_sym.ham_numerics)."""
     k, beta, omega0 = params(lam)
     end = numpy.minimum(tau, tau_d)
     tpi = numpy.pi / omega0
-    first = _hn.contact_integral(fun, numpy.zeros_like(end), numpy.minimum(end, tpi), lam)
-    second = _hn.contact_integral(fun, tpi, numpy.maximum(end, tpi), lam)
+    first = _hn.cumulative_integral(fun, 0.0, numpy.minimum(tau_d, tpi), lam,
+                                    numpy.minimum(end, tpi))
+    second = _hn.cumulative_integral(fun, tpi, numpy.maximum(tau_d, tpi), lam,
+                                     numpy.maximum(end, tpi))
     return first + second
 
 
@@ -268,8 +271,9 @@ def _force2(tau, lam):
 
 
 def impulse(tau, lam, tau_d=None):
-    """Impulse (47): int_0^min(tau, tau_d) max(delta, 0)^(3/2) dtau by smoothstep-mapped
-    Gauss-Legendre (zener_sym.ham_numerics.contact_integral); frozen after the end of contact."""
+    """Impulse (47): int_0^min(tau, tau_d) max(delta, 0)^(3/2) dtau, a smoothstep-mapped Chebyshev
+    antiderivative per lambda (zener_sym.ham_numerics.cumulative_integral); frozen after the end
+    of contact."""
     tau, lam = _inputs(tau, lam)
     if tau_d is None:
         u, inv = numpy.unique(lam, return_inverse=True)

@@ -92,14 +92,21 @@ def _naive(method: str, rtol: float) -> Method:
 
 
 def _registry_model(name: str, **options) -> Method:
+    model = REGISTRY[name]
+
     def summary(lams):
         import zener_sym as zs
 
-        s = zs.summary(np.asarray(lams, dtype=float), model=name, **options)
+        lams = np.asarray(lams, dtype=float)
+        # a model valid only below some lambda is measured where it is valid; NaN elsewhere
+        ok = lams < model.lam_bound if model.lam_bound is not None else np.ones(lams.shape, bool)
+        s = zs.summary(lams[ok], model=name, **options)
         out = {}
         for q in QUANTITIES:
             try:
-                out[q] = np.asarray(getattr(s, q))
+                v = np.full(lams.shape, np.nan)
+                v[ok] = np.asarray(getattr(s, q))
+                out[q] = v
             except FieldUnavailableError:
                 pass
         return out
@@ -111,7 +118,6 @@ def _registry_model(name: str, **options) -> Method:
         grid = np.array(taus)
         return list(zs.history(lam_col, grid, model=name, **options).force)
 
-    model = REGISTRY[name]
     label = name + "".join(f" {k}={v}" for k, v in sorted(options.items()))
     has_force = "force" in model.history_fields
     # mpmath backends cost ~1 s per history point: they are measured on every 10th point

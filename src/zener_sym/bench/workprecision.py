@@ -31,12 +31,15 @@ def measure(methods, ref: dict, quick: bool = False, log=print) -> list[dict]:
                 if q not in vals and status == "ok":
                     continue
                 err = float("nan")
+                used = len(lams)
                 if q in vals:
                     r = np.array([ref["summary"][k][q] for k in keys])
                     v = np.asarray(vals[q], dtype=float)
-                    err = float(np.max(np.abs(v - r) / np.abs(r))) if np.all(np.isfinite(v)) else np.inf
+                    used = int(np.isfinite(v).sum())  # NaN: lambda outside the model's validity
+                    err = float(np.nanmax(np.abs(v - r) / np.abs(r))) if used else float("nan")
                 rows.append(dict(method=m.name, family=m.family, quantity=q, max_rel_error=err,
-                                 seconds_per_lambda=t / len(lams), status=status))
+                                 seconds_per_lambda=t / max(used, 1), status=status,
+                                 lambdas=used))
         if m.force is not None:
             stride = m.extra.get("stride", 1)  # slow methods: every stride-th point, time scaled
             sub = [t[::stride] for t in taus]
@@ -54,7 +57,8 @@ def measure(methods, ref: dict, quick: bool = False, log=print) -> list[dict]:
             except Exception as exc:
                 err, t, status = float("nan"), float("nan"), f"{type(exc).__name__}: {exc}"[:200]
             rows.append(dict(method=m.name, family=m.family, quantity="force_history",
-                             max_rel_error=err, seconds_per_lambda=t / len(lams), status=status))
+                             max_rel_error=err, seconds_per_lambda=t / len(lams), status=status,
+                             lambdas=len(lams)))
         log(f"  {m.name}: done")
     return rows
 

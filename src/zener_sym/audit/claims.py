@@ -140,7 +140,7 @@ def _eq24():
     exact = np.array([delta_m_exact(v) for v in lams]) ** -1.5
     rel = np.abs(est(lams) / exact - 1)
     i = int(np.argmax(rel))
-    return _result(rel.max() < _f("eq24_5pct"), f"max rel. error {100 * rel.max():.2f}% at lambda = {lams[i]:.3g}",
+    return _result(rel.max() < _f("eq24_5pct"), f"max rel. error {100 * rel.max():.3f}% at lambda = {lams[i]:.3g}",
                    f"(24) with the derived constant, vs delta_m^(-3/2) of the exact ODE (compression "
                    f"phase, DOP853 rtol 1e-11) at {lams.size} lambda in [0, {top:g}]; derived form: {src}")
 
@@ -159,7 +159,7 @@ def _ham_claim(model, field, limit, lams, label):
     ex = getattr(_exact_summary(tuple(lams)), field)
     rel = np.abs(approx / ex - 1)
     i = int(np.argmax(rel))
-    return _result(rel.max() < limit, f"max rel. error {100 * rel.max():.2f}% at lambda = {lams[i]:.3g}",
+    return _result(rel.max() < limit, f"max rel. error {100 * rel.max():.3f}% at lambda = {lams[i]:.3g}",
                    f"{label} of model {model!r} vs the exact ODE at {lams.size} lambda in "
                    f"[{lams[0]:g}, {lams[-1]:g}] (the paper compared with FEM)")
 
@@ -188,7 +188,7 @@ def _fm0():
     ex = _exact_summary(tuple(lams)).F_m
     rel = np.abs(fm(lams) / ex - 1)
     i = int(np.argmax(rel))
-    return _result(rel.max() < _f("Fm_ham0_5.11pct"), f"max rel. error {100 * rel.max():.2f}% at lambda = {lams[i]:.3g}",
+    return _result(rel.max() < _f("Fm_ham0_5.11pct"), f"max rel. error {100 * rel.max():.3f}% at lambda = {lams[i]:.3g}",
                    f"F_m0 = delta0(tau_dc0)^(3/2) from the derived zeroth order (numpy), vs the exact "
                    f"ODE at {lams.size} lambda in ({lo:g}, 2.4]; derived form: {src}",
                    "the paper's reference is FEM")

@@ -15,6 +15,7 @@ import pytest
 
 import zener_sym as zs
 from zener_sym.bench.methods import naive_solve
+from zener_sym.bench.targets import dop853_force_loop
 from zener_sym.models import REGISTRY
 
 LAMS = np.linspace(0.0, 2.4, 200)
@@ -39,15 +40,7 @@ def test_ham1_numpy_history(benchmark):
 def test_scipy_dop853_loop_history(benchmark):
     tau = _tau_grid()
 
-    def loop():
-        out = np.empty_like(tau)
-        for i, lam in enumerate(LAMS):
-            summ, sol = naive_solve(lam, 1e-6, "DOP853", dense=True)
-            d = np.maximum(sol.sol(np.minimum(tau[i], summ["tau_d"]))[0], 0.0)
-            out[i] = np.where(tau[i] < summ["tau_d"], d**1.5, 0.0)
-        return out
-
-    out = benchmark.pedantic(loop, rounds=3, iterations=1)
+    out = benchmark.pedantic(lambda: dop853_force_loop(LAMS, tau), rounds=3, iterations=1)
     assert out.shape == (200, 200)
 
 

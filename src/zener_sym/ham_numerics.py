@@ -6,7 +6,9 @@ mpmath counterparts are in ``ham_numerics_mp``).
   tau -> 0 and omega0 -> 0 lose no digits. Series below |x| < 1/2, direct formula above.
 * ``first_root``: the first sign change of f on a scan grid, then bisection to a few ulps, all
   lambda values at once (no Python loop over points; the loop is over bisection steps).
-* ``contact_integral``: integral of a function of (tau, lam) over [A, B] with the smoothstep map
+* ``contact_integral``: (the per-point rule; the kernels now use ``cumulative_integral``, and the
+  tests use this one as its second route) integral of a function of (tau, lam) over [A, B] with the
+  smoothstep map
   tau = A + (B - A) v^2 (3 - 2 v) and Gauss-Legendre in v. The map's derivative vanishes at both
   ends, which turns the endpoint behaviours of the force, (tau - A)^{3/2} at the start and the end
   of contact and (pi/omega0 - tau)^{3/2} where the zeroth-order sqrt terms switch off, into

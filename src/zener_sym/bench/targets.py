@@ -8,6 +8,18 @@ from .methods import naive_solve
 from .timing import median_time
 
 
+def dop853_force_loop(lams, tau, rtol: float = 1e-6):
+    """The comparator of the ham1 target: per lambda, a scipy DOP853 solve of Eq. (10) with dense
+    output (tau from 0, guarded right-hand side, event delta = 0), force on that row of ``tau``."""
+    out = np.empty_like(tau)
+    for i, lam in enumerate(lams):
+        summ, sol = naive_solve(lam, rtol, "DOP853", dense=True)
+        t = tau[i]
+        d = np.maximum(sol.sol(np.minimum(t, summ["tau_d"]))[0], 0.0)
+        out[i] = np.where(t < summ["tau_d"], d**1.5, 0.0)
+    return out
+
+
 def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200, quick: bool = False) -> dict | None:
     """ham1 (numpy) force history on n_lam x n_tau against a per-lambda scipy DOP853 solve with
     dense output at rtol 1e-6 (the textbook set-up: tau from 0, guarded RHS, event delta = 0)."""
@@ -23,13 +35,7 @@ def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200, quick: bool = False) -> d
         return zs.history(lams[:, None], tau, model="ham1").force
 
     def loop():
-        out = np.empty_like(tau)
-        for i, lam in enumerate(lams):
-            summ, sol = naive_solve(lam, 1e-6, "DOP853", dense=True)
-            t = tau[i]
-            d = np.maximum(sol.sol(np.minimum(t, summ["tau_d"]))[0], 0.0)
-            out[i] = np.where(t < summ["tau_d"], d**1.5, 0.0)
-        return out
+        return dop853_force_loop(lams, tau)
 
     t_fast = median_time(fast, min_repeats=3 if not quick else 1, min_total=0.2)
     t_loop = median_time(loop, min_repeats=1, min_total=0.0)

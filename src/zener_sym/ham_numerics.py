@@ -16,6 +16,10 @@ mpmath counterparts are in ``ham_numerics_mp``).
 * ``cumulative_integral``: the same integrand in v, interpolated at N_CHEB Chebyshev points once
   per lambda and integrated as a Chebyshev series, then evaluated at every requested upper limit.
   A history of P times costs N_CHEB integrand evaluations per lambda instead of N_GL per time.
+  ``cumulative_rows`` is the same with rows given by index (``zener_sym.ham1_spectral`` uses it).
+* ``clenshaw_take``: Chebyshev series evaluated pointwise, each point picking its coefficient row
+  by index from a transposed table (no per-point copy of a row).
+* ``p3`` evaluates its series only at the points that need it (|x| < 1/2).
 """
 from __future__ import annotations
 
@@ -23,7 +27,8 @@ import math
 
 import numpy as np
 
-__all__ = ["p3", "first_root", "contact_integral", "cumulative_integral", "N_GL", "N_CHEB"]
+__all__ = ["p3", "first_root", "contact_integral", "cumulative_integral", "cumulative_rows",
+           "clenshaw_take", "N_GL", "N_CHEB"]
 
 # Taylor coefficients of P3: sum_j (-1)^j 2 (j + 1) x^{2j} / (2j + 3)!
 _P3_COEF = [(-1) ** j * 2.0 * (j + 1) / math.factorial(2 * j + 3) for j in range(12)]
@@ -32,14 +37,18 @@ _P3_COEF = [(-1) ** j * 2.0 * (j + 1) / math.factorial(2 * j + 3) for j in range
 def p3(x):
     """(sin x - x cos x)/x^3 for a float array, accurate to rounding (P3(0) = 1/3)."""
     x = np.asarray(x, dtype=float)
+    shape = x.shape
+    x = x.reshape(-1)
     small = np.abs(x) < 0.5
-    x2 = x * x
-    series = np.zeros_like(x)
-    for c in reversed(_P3_COEF):  # Horner in x^2; 12 terms reach 1e-19 at |x| = 1/2
-        series = series * x2 + c
     xs = np.where(small, 1.0, x)
-    direct = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
-    return np.where(small, series, direct)
+    out = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
+    if small.any():  # the series only where it is needed: most points of a history are not small
+        x2 = x[small] ** 2
+        series = np.zeros_like(x2)
+        for c in reversed(_P3_COEF):  # Horner in x^2; 12 terms reach 1e-19 at |x| = 1/2
+            series = series * x2 + c
+        out[small] = series
+    return out.reshape(shape)
 
 
 def first_root(fun, lam, lo, hi, n_scan=64, what="root"):
@@ -117,29 +126,51 @@ def cumulative_integral(fun, A, B, lam, X):
     then evaluated at every X of that lam: no Python loop over points or over lam.
     """
     A, B, lam, X = np.broadcast_arrays(*(np.asarray(a, float) for a in (A, B, lam, X)))
-    shape = X.shape
     lam_u, first, inv = np.unique(lam.ravel(), return_index=True, return_inverse=True)
-    a_u, b_u = A.ravel()[first], B.ravel()[first]
-    L_u = np.maximum(b_u - a_u, 0.0)
-    t = a_u[:, None] + L_u[:, None] * _CMAP
-    g = fun(t, lam_u[:, None]) * (L_u[:, None] * _CDMAP)
+    return cumulative_rows(lambda t, r: fun(t, lam_u[r]), A.ravel()[first], B.ravel()[first],
+                           inv.reshape(X.shape), X)
+
+
+def cumulative_rows(fun, A, B, rows, X):
+    """integral_{A[r]}^X fun(tau, r) dtau at each X, with r = ``rows`` there (A[r] <= X <= B[r]).
+
+    ``fun(t, r)`` gets t of shape (R, N_CHEB) and r of shape (R, 1) (row indices into A and B).
+    One Chebyshev antiderivative per row, as in ``cumulative_integral``.
+    """
+    A, B = np.asarray(A, float), np.asarray(B, float)
+    rows = np.asarray(rows, dtype=np.intp)
+    X = np.asarray(X, float)
+    R = np.arange(A.size)
+    L_u = np.maximum(B - A, 0.0)
+    t = A[:, None] + L_u[:, None] * _CMAP
+    g = fun(t, R[:, None]) * (L_u[:, None] * _CDMAP)
     # Chebyshev coefficients in x = 2 v - 1, one row per lambda; einsum rather than a BLAS matmul,
     # whose blocking would make a lambda's digits depend on which other lambdas share the call
     coef = np.einsum("uj,kj->uk", g, _CFIT)
     icoef = np.polynomial.chebyshev.chebint(coef, lbnd=-1.0, scl=0.5, axis=1)
-    L = L_u[inv]
+    L = L_u.take(rows)
     with np.errstate(invalid="ignore", divide="ignore"):
-        frac = np.where(L > 0.0, (X.ravel() - a_u[inv]) / L, 0.0)
+        frac = np.where(L > 0.0, (X - A.take(rows)) / L, 0.0)
     x = 2.0 * _smoothstep_inverse(frac) - 1.0
-    c = icoef[inv]
-    out = _clenshaw(c, x) - _clenshaw(c, np.full_like(x, -1.0))  # exactly 0 at X = A
-    return np.where(L > 0.0, out, 0.0).reshape(shape)
+    icT = np.ascontiguousarray(icoef.T)
+    at_a = clenshaw_take(icT, R, np.full(R.size, -1.0))  # same arithmetic: exactly 0 at X = A
+    out = clenshaw_take(icT, rows, x) - at_a.take(rows)
+    return np.where(L > 0.0, out, 0.0)
 
 
-def _clenshaw(c, x):
-    """sum_j c[:, j] T_j(x), each point with its own coefficient row."""
-    b1 = np.zeros_like(x)
-    b2 = np.zeros_like(x)
-    for j in range(c.shape[1] - 1, 0, -1):
-        b1, b2 = 2.0 * x * b1 - b2 + c[:, j], b1
-    return x * b1 - b2 + c[:, 0]
+def clenshaw_take(cT, idx, x):
+    """sum_j cT[j, idx] T_j(x) pointwise: each point takes its coefficient row by index (no
+    copy of a row per point)."""
+    n = cT.shape[0]
+    x2 = 2.0 * x
+    b1 = cT[n - 1].take(idx)
+    b2 = np.zeros_like(x2)
+    for j in range(n - 2, 0, -1):
+        b = x2 * b1
+        b -= b2
+        b += cT[j].take(idx)
+        b1, b2 = b, b1
+    out = x * b1
+    out -= b2
+    out += cT[0].take(idx)
+    return out

@@ -198,16 +198,29 @@ def delta(tau, lam):
     """First-order HAM compression delta0 + delta1 (42), with the continuation past pi/omega0."""
     tau, lam = _inputs(tau, lam)
     k, beta, omega0 = params(lam)
-    Kcc, Ksc, Kss = _K(beta, omega0, tau)
-{delta_block}
-    return out
+    return delta_from_K(tau, lam, *_K(beta, omega0, tau))
 
 
 def delta_dot(tau, lam):
     """d/dtau of delta0 + delta1 (the C' terms cancel by Eq. 38)."""
     tau, lam = _inputs(tau, lam)
     k, beta, omega0 = params(lam)
-    Kcc, Ksc, Kss = _K(beta, omega0, tau)
+    return delta_dot_from_K(tau, lam, *_K(beta, omega0, tau))
+
+
+def delta_from_K(tau, lam, Kcc, Ksc, Kss):
+    """delta0 + delta1 (42) for given square-root integrals K_cc, K_sc, K_ss at omega0 tau.
+
+    The inputs are not checked: ``delta`` passes its quadrature values, and
+    ``zener_sym.ham1_spectral`` its Chebyshev-series values, both on validated arrays."""
+    k, beta, omega0 = params(lam)
+{delta_block}
+    return out
+
+
+def delta_dot_from_K(tau, lam, Kcc, Ksc, Kss):
+    """d/dtau of delta0 + delta1 for given K_cc, K_sc, K_ss (inputs not checked, as above)."""
+    k, beta, omega0 = params(lam)
 {delta_dot_block}
     return out
 

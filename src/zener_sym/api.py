@@ -15,11 +15,12 @@ class _Fields:
     _all: tuple = ()
     _kind = ""
 
-    def __init__(self, model, values: dict, scalar: bool):
+    def __init__(self, model, values: dict, scalar: bool, skipped: tuple = ()):
         self.model = model.name
         self._model = model
         self._values = values
         self._scalar = scalar
+        self._skipped = skipped
 
     def __getattr__(self, name):
         if name.startswith("_"):
@@ -27,6 +28,11 @@ class _Fields:
         if name in self._values:
             v = self._values[name]
             return float(v.reshape(-1)[0]) if self._scalar else v
+        if name in self._skipped:
+            asked = tuple(f for f in self.fields if f != "tau")
+            raise AttributeError(f"{name!r} was not computed: this history was asked for "
+                                 f"fields={asked!r}; include {name!r} in fields= (or leave "
+                                 f"fields out for every field)")
         if name in self._all:
             raise self._model.unavailable(name, self._kind)
         raise AttributeError(f"{type(self).__name__} has no field {name!r}; fields: "
@@ -122,15 +128,24 @@ def summary(lam, model: str | None = None, **options):
     return Summary(m, values, scalar=arr.ndim == 0)
 
 
-def history(lam, tau, model: str = "ham1", **options) -> History:
+def history(lam, tau, model: str = "ham1", fields=None, **options) -> History:
     """Histories delta, velocity, force and impulse at times ``tau`` for ``lam``.
 
     ``lam`` and ``tau`` broadcast by numpy rules (lam of shape (M, 1) with tau of shape (M, N)
     gives (M, N)). Past the end of contact delta and the force are 0 and the impulse keeps its
     final value.
+
+    Parameters
+    ----------
+    fields : str or sequence of str, optional
+        Only these of ``delta``, ``velocity``, ``force``, ``impulse`` (default: every field the
+        model gives). Models that can skip work do: ham1's force alone needs no impulse quadrature.
+    **options
+        Model options, as for ``summary``.
     """
     m, arr = _validated(model, lam)
     m.check_options(options)
+    want = _history_fields(m, fields)
     t = params.as_tau(tau)
     try:
         lam_b, tau_b = np.broadcast_arrays(arr, t)
@@ -138,11 +153,34 @@ def history(lam, tau, model: str = "ham1", **options) -> History:
         raise ValueError(
             f"lambda of shape {arr.shape} does not broadcast against tau of shape {t.shape}"
         ) from None
-    values = m._history(np.ascontiguousarray(lam_b), np.ascontiguousarray(tau_b), **options)
+    values = m.history_values(np.ascontiguousarray(lam_b), np.ascontiguousarray(tau_b), want,
+                              **options)
     values = {k: np.asarray(v, dtype=float) for k, v in values.items()}
     values["tau"] = tau_b.copy()
     _no_silent_nan(values, m)
-    return History(m, values, scalar=False)
+    skipped = tuple(f for f in m.history_fields if f not in want)
+    return History(m, values, scalar=False, skipped=skipped)
+
+
+def _history_fields(model, fields) -> tuple:
+    """The history fields asked for, checked against what the model gives."""
+    if fields is None:
+        return tuple(model.history_fields)
+    if isinstance(fields, str):
+        fields = (fields,)
+    try:
+        fields = tuple(fields)
+    except TypeError:
+        raise ValueError(f"fields must be a field name or a sequence of them, got {fields!r}; "
+                         f"allowed: {', '.join(HISTORY_FIELDS)}") from None
+    if not fields:
+        raise ValueError(f"fields is empty; allowed: {', '.join(HISTORY_FIELDS)}")
+    for f in fields:
+        if f not in HISTORY_FIELDS:
+            raise ValueError(f"unknown history field {f!r}; allowed: {', '.join(HISTORY_FIELDS)}")
+        if f not in model.history_fields:
+            raise model.unavailable(f, "history")
+    return tuple(f for f in model.history_fields if f in fields)
 
 
 def _no_silent_nan(values: dict, model) -> None:

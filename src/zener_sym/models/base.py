@@ -55,6 +55,18 @@ class Model:
     def _history(self, lam: np.ndarray, tau: np.ndarray, **options) -> dict:  # pragma: no cover
         raise self.unavailable("history", "history")
 
+    #: True when ``_history`` takes ``fields=`` and computes only those; other models compute
+    #: every field and ``history_values`` drops the rest.
+    selects_fields: bool = False
+
+    def history_values(self, lam: np.ndarray, tau: np.ndarray, fields: tuple, **options) -> dict:
+        """The history ``fields`` (a checked subset of ``history_fields``) at lam, tau."""
+        if self.selects_fields:
+            values = self._history(lam, tau, fields=fields, **options)
+        else:
+            values = self._history(lam, tau, **options)
+        return {f: values[f] for f in fields}
+
 
 REGISTRY: dict[str, Model] = {}
 

@@ -4,8 +4,9 @@
     python -m pytest benchmarks/ --benchmark-only --benchmark-group-by=group
 
 Each group holds the methods a speed target compares, so their ratio is read off one run:
-- "history 200x200": ham1 (numpy) force history on 200 lambda x 200 tau, against a per-lambda
-  scipy DOP853 solve with dense output at rtol 1e-6 (target: ham1 50x faster).
+- "history 200x200": ham1 (numpy) force history on 200 lambda x 200 tau (``fields="force"``),
+  against a per-lambda scipy DOP853 solve with dense output at rtol 1e-6 (target: ham1 50x
+  faster); also ham1 with every history field, for scale.
 - "per point": ham1 numpy against ham1 mpmath per point (target: 1000x).
 - "summary 2000": the exact model's summary for 2000 lambda in [0, 5], against a per-lambda
   scipy DOP853 loop with events at rtol 1e-10 (target: 50x).
@@ -31,7 +32,17 @@ def _tau_grid():
 @pytest.mark.benchmark(group="history 200x200")
 def test_ham1_numpy_history(benchmark):
     tau = _tau_grid()
-    out = benchmark(lambda: zs.history(LAMS[:, None], tau, model="ham1").force)
+    out = benchmark(lambda: zs.history(LAMS[:, None], tau, model="ham1", fields="force").force)
+    assert out.shape == (200, 200)
+
+
+@needs_ham1
+@pytest.mark.benchmark(group="history 200x200")
+def test_ham1_numpy_history_every_field(benchmark):
+    """Not the target's comparison (DOP853 gives the force only): delta, force, impulse and
+    velocity, the impulse by one Chebyshev antiderivative per lambda."""
+    tau = _tau_grid()
+    out = benchmark(lambda: zs.history(LAMS[:, None], tau, model="ham1").impulse)
     assert out.shape == (200, 200)
 
 

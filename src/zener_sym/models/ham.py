@@ -127,17 +127,16 @@ class Ham1(_HamModel):
                                  int_F2=J))
         return self._finish({f: [float(r[f]) for r in rows] for f in rows[0]})
 
-    def _history(self, lam, tau, **options):
+    selects_fields = True
+
+    def _history(self, lam, tau, fields=None, **options):
         backend, dps = _backend(options)
         h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
+        want = set(self.history_fields if fields is None else fields)
+        if backend == "numpy":
+            return _ham1_history_numpy(h1, lam, tau, want)
         u, inv = np.unique(lam, return_inverse=True)
         td_u = h1.contact_end(u)
-        if backend == "numpy":
-            td = td_u[inv].reshape(lam.shape)
-            on = tau < td
-            d = np.where(on, np.maximum(h1.delta(tau, lam), 0.0), 0.0)
-            imp = h1.impulse(tau, lam, tau_d=td)
-            return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
         d, imp = np.empty(tau.shape), np.empty(tau.shape)
         with mpmath.workdps(dps):
             td_mp = {float(x): m1.contact_end(float(x), guess=float(t))
@@ -149,6 +148,38 @@ class Ham1(_HamModel):
                 d[i] = float(max(dd, 0))
                 imp[i] = float(m1.impulse(t, x, tau_d=tdx))
         return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
+
+
+def _ham1_history_numpy(h1, lam, tau, want):
+    """ham1 histories in float64: the per-lambda Chebyshev series of ``zener_sym.ham1_spectral``,
+    and the quadrature kernels for the lambda values whose series fail their own check (near
+    the critical lambda)."""
+    from .. import ham1_spectral
+
+    u, rows = ham1_spectral.rows_of(lam)
+    series = ham1_spectral.Ham1Series(u)
+    out = {}
+    need_imp = bool(want & {"impulse", "velocity"})
+    if want & {"delta", "force"}:
+        d = series.delta(rows, tau)
+        out["delta"], out["force"] = d, d * np.sqrt(d)
+    if need_imp:
+        out["impulse"] = series.impulse(rows, tau)
+    if not series.ok.all():
+        slow = ~series.ok.take(rows)
+        lam_s, tau_s = lam[slow], tau[slow]
+        td = h1.contact_end(u[~series.ok])[np.searchsorted(u[~series.ok], lam_s)]
+        if want & {"delta", "force"}:
+            ds = np.where(tau_s < td, np.maximum(h1.delta(tau_s, lam_s), 0.0), 0.0)
+            out["delta"] = np.array(out["delta"])
+            out["force"] = np.array(out["force"])
+            out["delta"][slow], out["force"][slow] = ds, ds * np.sqrt(ds)
+        if need_imp:
+            out["impulse"] = np.array(out["impulse"])
+            out["impulse"][slow] = h1.impulse(tau_s, lam_s, tau_d=td)
+    if need_imp:
+        out["velocity"] = 1.0 - out["impulse"]
+    return out
 
 
 register(Ham0())

@@ -1,0 +1,330 @@
+"""Fast first-order HAM solution: delta0 + delta1 per lambda as piecewise Chebyshev series.
+
+Why: the generated kernel ``ham1_numpy.delta`` costs three 64-node Gauss-Jacobi quadratures per
+point (the square-root integrals K_cc, K_sc, K_ss), and its contact end two scans and bisections
+on that kernel. A history asks for many times at few lambda values, so this module pays the
+quadrature once per lambda and then evaluates polynomials.
+
+How, for each lambda (all lambda values at once, no Python loop over them or over points):
+
+1. Zeroth-order contact, 0 <= tau <= pi/omega0, in the variable t in [0, 1] with
+   theta = omega0 tau = pi sin^2(pi t / 2). The map is quadratic at both ends, which turns the
+   endpoint behaviours theta^{3/2} and (pi - theta)^{3/2} of the K integrals into analytic
+   functions of t. The integrands of K are sampled at N_GLOBAL Chebyshev points in t and
+   integrated as one Chebyshev series (a constant N x N matrix), which gives K at any t.
+2. delta from the generated formula ``ham1_numpy.delta_from_K`` at the same points, fitted by
+   one series, which a constant matrix re-expands as series of degree N_LOCAL - 1 on N_PIECES
+   equal pieces of [0, 1] (short pieces, low degree: a point costs N_LOCAL steps of Clenshaw's
+   recurrence instead of N_GLOBAL).
+3. End of contact tau_d: the first sign change of delta on a grid, then safeguarded Newton on the
+   series (when tau_d <= pi/omega0) or on the closed form with K frozen at pi (beyond, Eq. 42's
+   continuation, see ``zener_sym.models.ham``).
+4. Past pi/omega0 and up to tau_d, one more series in tau itself (the frozen-K formula is
+   analytic there).
+
+Each row checks itself: a lambda whose series (the global one and every piece) do not decay to
+TAIL_TOL of its largest compression is marked ``ok = False``; callers use the quadrature kernels
+for those rows. That happens from lambda = 2.414 on (a = beta/(2 omega0) = 3.6), as omega0 -> 0
+near the critical lambda makes exp(-beta tau) too steep for N_GLOBAL points; rows with a above
+A_MAX are not tried at all. Agreement with the quadrature kernels and with the mpmath closed forms
+is pinned in tests/test_ham1_spectral.py; the speed is measured by ``zener-sym bench``.
+
+All linear algebra is done row by row (batched matmuls), so a lambda's digits do not depend on
+which other lambda values share the call.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from . import ham_numerics as hn
+
+__all__ = ["Ham1Series", "rows_of", "N_GLOBAL", "N_PIECES", "N_LOCAL", "A_MAX",
+           "TAIL_TOL"]
+
+_C = np.polynomial.chebyshev
+
+#: Chebyshev points for the K integrals on the whole zeroth-order contact.
+N_GLOBAL = 64
+#: Pieces of [0, 1] in t, and the number of coefficients of delta's series on each.
+N_PIECES = 16
+N_LOCAL = 16
+#: Largest decay rate a = beta / (2 omega0) tried; the truncation check stops at a = 3.6 anyway.
+A_MAX = 20.0
+#: A row is used only if the last two coefficients of its series are below this times max|delta|.
+TAIL_TOL = 5e-14
+#: Grid cells per piece for the first sign change of delta; (end in units of pi/omega0, cells)
+#: of the two stages of the search past pi/omega0.
+_SCAN = 8
+_SCAN_PAST = ((1.5, 8), (3.0, 24))
+
+
+def _first_kind(n):
+    """Chebyshev points of the first kind, ascending, and the values -> coefficients matrix."""
+    x = np.cos(np.pi * (np.arange(n) + 0.5) / n)[::-1].copy()
+    return x, np.linalg.inv(_C.chebvander(x, n - 1))
+
+
+def _theta(t):
+    """theta = pi sin^2(pi t / 2) and d theta / dt."""
+    s = np.sin(0.5 * np.pi * t)
+    return np.pi * s * s, 0.5 * np.pi * np.pi * np.sin(np.pi * t)
+
+
+# Global series for K: integrand values at the nodes -> K at any t, through a fixed matrix.
+_GX, _GFIT = _first_kind(N_GLOBAL)
+_GT = 0.5 * (1.0 + _GX)
+_GTH, _GDTH = _theta(_GT)
+_GS, _GC = np.sin(_GTH), np.cos(_GTH)
+# integrand factor common to the three K (dtheta/dx = dtheta/dt / 2), and g(theta) per K
+_GBASE = np.sqrt(_GS) * 0.5 * _GDTH
+_GG = np.stack([_GC * _GC, _GS * _GC, _GS * _GS])
+_GINT = _C.chebint(np.eye(N_GLOBAL), lbnd=-1.0, axis=0)  # coefficients of the antiderivative
+
+
+def _k_matrix(t):
+    """Matrix taking integrand values at the N_GLOBAL nodes to K at the points t (in [0, 1])."""
+    return (_C.chebvander(2.0 * np.asarray(t) - 1.0, N_GLOBAL) @ _GINT @ _GFIT).T
+
+
+_GKP = _k_matrix(np.append(_GT, 1.0))  # (N, N + 1): K at the global nodes, then at pi
+# Local pieces: Chebyshev points of each piece, and the global -> piece coefficients matrix
+_LX, _LFIT = _first_kind(N_LOCAL)
+_LT = (np.arange(N_PIECES)[:, None] + 0.5 * (1.0 + _LX)) / N_PIECES  # (P, n) t of the nodes
+_REEXPAND = (_C.chebvander(2.0 * _LT.ravel() - 1.0, N_GLOBAL - 1).T
+             @ np.kron(np.eye(N_PIECES), _LFIT.T))  # (N, P n)
+# scan grid: _SCAN points per piece from its left end, in local x
+_SX = -1.0 + 2.0 * np.arange(_SCAN) / _SCAN
+_SV = _C.chebvander(_SX, N_LOCAL - 1).T  # (n, _SCAN)
+_DER = np.vstack([_C.chebder(np.eye(N_LOCAL), axis=0), np.zeros((1, N_LOCAL))])  # d/dx, (n, n)
+
+
+def _rowmul(A, B):
+    """A @ B over the last axis of A, one row at a time (a batched matmul): a row's digits do
+    not depend on which other rows share the call, as they may in one blocked BLAS product."""
+    return np.matmul(A[..., None, :], B)[..., 0, :]
+
+
+def _h1():
+    from .generated import ham1_numpy
+
+    return ham1_numpy
+
+
+class Ham1Series:
+    """Piecewise Chebyshev series of the first-order solution for sorted, distinct lambda values.
+
+    Attributes (arrays over the rows): ``lam``, ``k``, ``beta``, ``omega0``, ``tpi`` = pi/omega0,
+    ``tau_d`` (end of contact), ``ok`` (the row passed its checks; other rows hold no series and
+    NaN in ``tau_d``), ``K_pi`` (3 x rows, K at theta = pi).
+    """
+
+    def __init__(self, lam):
+        h1 = _h1()
+        lam = np.asarray(lam, dtype=float)
+        self.lam = lam
+        self.k, self.beta, self.omega0 = h1.params(lam)
+        self.tpi = np.pi / self.omega0
+        U, P, n = lam.size, N_PIECES, N_LOCAL
+        a = self.beta / (2.0 * self.omega0)
+        tried = a <= A_MAX
+        # 1. K at the global nodes and at pi, from the integrand at the global nodes
+        f = np.exp(-np.minimum(a, A_MAX)[:, None] * _GTH) * _GBASE  # (U, N)
+        fg = f[None, :, :] * _GG[:, None, :]  # (3, U, N)
+        K = _rowmul(fg, _GKP)  # (3, U, N + 1)
+        K, self.K_pi = K[:, :, :-1], np.ascontiguousarray(K[:, :, -1])
+        # 2. delta at the global nodes, its series, re-expanded on the pieces
+        tau_g = _GTH[None, :] / self.omega0[:, None]
+        d = h1.delta_from_K(tau_g, np.broadcast_to(lam[:, None], tau_g.shape), *K)
+        gcoef = _rowmul(d, _GFIT.T)
+        coef = _rowmul(gcoef, _REEXPAND).reshape(U, P, n)
+        # truncation: the last two coefficients, globally and on every piece, against the largest
+        # compression of the row
+        scale = np.max(np.abs(d), axis=1)
+        tail = np.maximum(np.max(np.abs(gcoef[:, -2:]), axis=1),
+                          np.max(np.abs(coef[:, :, -2:]), axis=(1, 2)))
+        ok = tried & (tail <= TAIL_TOL * scale) & np.isfinite(scale)
+        self._seg1 = coef
+        # 3. end of contact
+        self.tau_d = np.full(U, np.nan)
+        self.ok = ok
+        self._contact_end()
+        # 4. the piece past pi/omega0, for rows that reach it
+        self._seg2 = np.zeros((U, n))
+        self._seg2_len = np.maximum(self.tau_d - self.tpi, 0.0)
+        past = self.ok & (self._seg2_len > 0)
+        if past.any():
+            tn = self.tpi[past, None] + self._seg2_len[past, None] * 0.5 * (1.0 + _LX)
+            lp = np.broadcast_to(lam[past, None], tn.shape)
+            d2 = h1.delta_from_K(tn, lp, *(K[past, None] for K in self.K_pi))
+            c2 = _rowmul(d2, _LFIT.T)
+            self._seg2[past] = c2
+            bad2 = np.max(np.abs(c2[:, -2:]), axis=1) > TAIL_TOL * scale[past]
+            self.ok[np.flatnonzero(past)[bad2]] = False
+        self.tau_d[~self.ok] = np.nan
+        self._seg2_den = np.where(self._seg2_len > 0, self._seg2_len, 1.0)
+        # coefficient table for evaluation: rows r*P + p (pieces), then U*P + r (past pi/omega0)
+        self._cT = np.ascontiguousarray(
+            np.concatenate([self._seg1.reshape(U * P, n), self._seg2]).T)
+
+    # ----------------------------------------------------------------------- end of contact
+    def _seg1_eval(self, rows, t, deriv=False):
+        """delta (and d delta / dt) on the zeroth-order contact at t in [0, 1], one t per row."""
+        y = t * N_PIECES
+        p = np.minimum(y.astype(np.intp), N_PIECES - 1)
+        x = 2.0 * (y - p) - 1.0
+        c = self._seg1[rows, p]  # (m, n)
+        val = np.einsum("mj,mj->m", c, _C.chebvander(x, N_LOCAL - 1))
+        if not deriv:
+            return val
+        dc = _rowmul(c, _DER.T)
+        return val, np.einsum("mj,mj->m", dc, _C.chebvander(x, N_LOCAL - 1)) * 2.0 * N_PIECES
+
+    def _contact_end(self):
+        h1 = _h1()
+        rows = np.flatnonzero(self.ok)
+        if rows.size == 0:
+            return
+        # sign of delta on a grid of t (left ends of _SCAN cells per piece), then t = 1
+        grid = _rowmul(self._seg1[rows], _SV).reshape(rows.size, -1)
+        d_pi = h1.delta_from_K(self.tpi[rows], self.lam[rows], *self.K_pi[:, rows])
+        grid = np.concatenate([grid, d_pi[:, None]], axis=1)
+        neg = grid <= 0.0
+        neg[:, 0] = False  # delta(0) = 0: contact starts there
+        inside = neg.any(axis=1)
+        tg = np.arange(grid.shape[1]) / (N_PIECES * _SCAN)
+        if inside.any():
+            r = rows[inside]
+            j = np.argmax(neg[inside], axis=1)
+            ii = np.arange(r.size)
+            g = grid[inside]
+            t = _newton(lambda t: self._seg1_eval(r, t, deriv=True), tg[j - 1], tg[j],
+                        g[ii, j - 1], g[ii, j])
+            self.tau_d[r] = _theta(t)[0] / self.omega0[r]
+        if (~inside).any():
+            r = rows[~inside]
+            tpi = self.tpi[r]
+            lam = self.lam[r]
+            K = self.K_pi[:, r]
+            # first sign change on (pi, 1.5 pi], then (1.5 pi, 3 pi] (up to 3 pi/omega0, as
+            # contact_end), in phase omega0 tau
+            ii = np.arange(r.size)
+            lo, f_lo = tpi.copy(), d_pi[~inside].copy()
+            hi, f_hi = np.full(r.size, np.nan), np.full(r.size, np.nan)
+            start = 1.0
+            for stop, cells in _SCAN_PAST:
+                todo = np.isnan(hi)
+                if not todo.any():
+                    break
+                q = ii[todo]
+                tg2 = tpi[q, None] * (start + (stop - start) * np.arange(1, cells + 1) / cells)
+                vals = h1.delta_from_K(tg2, np.broadcast_to(lam[q, None], tg2.shape),
+                                       *(k[q, None] for k in K))
+                neg2 = vals <= 0.0
+                found = neg2.any(axis=1)
+                j = np.argmax(neg2, axis=1)
+                jj = np.arange(q.size)
+                prev_t = np.where(j > 0, tg2[jj, j - 1], lo[q])
+                prev_f = np.where(j > 0, vals[jj, j - 1], f_lo[q])
+                lo[q] = np.where(found, prev_t, tg2[:, -1])
+                f_lo[q] = np.where(found, prev_f, vals[:, -1])
+                hi[q] = np.where(found, tg2[jj, j], np.nan)
+                f_hi[q] = np.where(found, vals[jj, j], np.nan)
+                start = stop
+            if np.isnan(hi).any():
+                bad = lam[np.isnan(hi)][0]
+                raise ValueError(f"no end of contact (delta = 0) found before tau = 3 pi/omega0 "
+                                 f"at lambda = {bad!r}")
+
+            def fun(tau):
+                return (h1.delta_from_K(tau, lam, *K), h1.delta_dot_from_K(tau, lam, *K))
+
+            self.tau_d[r] = _newton(fun, lo, hi, f_lo, f_hi)
+
+    # ------------------------------------------------------------------------- evaluation
+    def delta(self, rows, tau):
+        """delta at times ``tau`` (>= 0) for rows ``rows`` (same shape, rows with ``ok``):
+        0 from the end of contact on."""
+        rows = np.asarray(rows, dtype=np.intp)
+        tau = np.asarray(tau, dtype=float)
+        if rows.ndim >= 1 and rows.shape[-1] > 1 and rows.strides[-1] == 0:
+            rows = rows[..., :1]  # one row per line of tau (rows_of's broadcast column)
+        w, tpi, td = self.omega0.take(rows), self.tpi.take(rows), self.tau_d.take(rows)
+        f = np.minimum(tau * (w * (1.0 / np.pi)), 1.0)
+        t = np.arcsin(np.sqrt(f))
+        t *= 2.0 * N_PIECES / np.pi
+        p = np.minimum(t.astype(np.intp), N_PIECES - 1)
+        x1 = 2.0 * (t - p) - 1.0
+        on1 = tau < tpi
+        x2 = np.clip((tau - tpi) * (2.0 / self._seg2_den.take(rows)) - 1.0, -1.0, 1.0)
+        x = np.where(on1, x1, x2)
+        idx = np.where(on1, rows * N_PIECES + p, self.lam.size * N_PIECES + rows)
+        d = hn.clenshaw_take(self._cT, idx, x)
+        return np.where(tau < td, np.maximum(d, 0.0), 0.0)
+
+    def force(self, rows, tau):
+        """Contact force delta^{3/2} (45) at ``tau`` for ``rows``."""
+        d = self.delta(rows, tau)
+        return d * np.sqrt(d)
+
+    def impulse(self, rows, tau):
+        """Impulse (47) int_0^min(tau, tau_d) F dtau: a Chebyshev antiderivative per row on
+        [0, min(tau_d, pi/omega0)] and on [pi/omega0, max(tau_d, pi/omega0)], as the kernels
+        (``ham_numerics.cumulative_integral``), with the force from the series."""
+        return self._contact_integral(lambda d: d * np.sqrt(d), rows, tau)
+
+    def int_F2(self):
+        """integral of F^2 over the contact, per row."""
+        rows = np.arange(self.lam.size)
+        return self._contact_integral(lambda d: d ** 3, rows, self.tau_d)
+
+    def _contact_integral(self, power, rows, tau):
+        rows = np.asarray(rows, dtype=np.intp)
+        tau = np.asarray(tau, dtype=float)
+        u = np.arange(self.lam.size)
+        safe = np.where(self.ok, self.tau_d, self.tpi)
+        fun = lambda tt, r: power(self.delta(np.broadcast_to(r, tt.shape), tt))  # noqa: E731
+        end = np.minimum(tau, safe.take(rows))
+        tpi = self.tpi.take(rows)
+        first = hn.cumulative_rows(fun, np.zeros(u.size), np.minimum(safe, self.tpi), rows,
+                                   np.minimum(end, tpi))
+        second = hn.cumulative_rows(fun, self.tpi, np.maximum(safe, self.tpi), rows,
+                                    np.maximum(end, tpi))
+        return first + second
+
+
+def _newton(fun, lo, hi, f_lo, f_hi, iters=60):
+    """Root of f in [lo, hi] with f(lo) > 0 >= f(hi), per element: from the secant point, Newton
+    steps kept inside the bracket (bisection otherwise); ``fun(x) -> (f, f')``."""
+    lo = np.array(lo, dtype=float)
+    hi = np.array(hi, dtype=float)
+    x = lo + (hi - lo) * (f_lo / (f_lo - f_hi))
+    tiny = np.finfo(float).tiny
+    for _ in range(iters):
+        f, fp = fun(x)
+        pos = f > 0.0
+        lo = np.where(pos, x, lo)
+        hi = np.where(pos, hi, x)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = x - f / fp
+        good = np.isfinite(step) & (step >= lo) & (step <= hi)
+        new = np.where(good, step, 0.5 * (lo + hi))
+        done = np.abs(new - x) <= 2.0 * np.finfo(float).eps * np.maximum(np.abs(x), tiny)
+        x = new
+        if done.all():
+            break
+    return x
+
+
+def rows_of(lam):
+    """Distinct lambda values of ``lam`` (sorted) and, per element, its row among them.
+
+    A ``lam`` constant along its last axis (a column broadcast against times) is recognised
+    without sorting every element."""
+    lam = np.asarray(lam, dtype=float)
+    if lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(lam, np.broadcast_to(
+            lam[..., :1], lam.shape)):
+        u, inv = np.unique(lam[..., 0], return_inverse=True)
+        return u, np.broadcast_to(inv.reshape(lam.shape[:-1] + (1,)), lam.shape)
+    u, inv = np.unique(lam, return_inverse=True)
+    return u, inv.reshape(lam.shape)
+

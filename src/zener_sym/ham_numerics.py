@@ -162,9 +162,13 @@ def clenshaw_take(cT, idx, x):
     """sum_j cT[j, idx] T_j(x) pointwise: each point takes its coefficient row by index (no
     copy of a row per point)."""
     n = cT.shape[0]
+    idx = np.asarray(idx)
+    if idx.ndim >= 1 and idx.shape[-1] > 1 and idx.strides[-1] == 0:
+        idx = idx[..., :1]  # a broadcast column: take once per line, broadcast in the arithmetic
     x2 = 2.0 * x
     b1 = cT[n - 1].take(idx)
     b2 = np.zeros_like(x2)
+    b1 = b1 + b2  # to the points' shape
     for j in range(n - 2, 0, -1):
         b = x2 * b1
         b -= b2

@@ -157,3 +157,22 @@ def test_a_field_the_model_does_not_give():
         pytest.skip("every registered model gives a force history")
     with pytest.raises(FieldUnavailableError):
         zs.history(0.1, [0.5], model=no_history[0], fields="force")
+
+
+# ---------------------------------------------------------------------------- summary
+def test_summary_matches_the_quadrature_kernels(series):
+    got = series.summary()
+    ref = h1.summary(LAMS)
+    for f in ("tau_dc", "delta_m", "tau_d", "F_m", "impulse", "int_F2"):
+        np.testing.assert_allclose(got[f], ref[f], rtol=2e-13, err_msg=f)
+    # e = -delta'(tau_d) is small at large lambda: compare against the scale of delta'
+    np.testing.assert_allclose(got["e"], ref["e"], rtol=0, atol=2e-14)
+
+
+def test_summary_through_the_api_falls_back_near_the_critical_lambda():
+    lam = np.array([0.5, 2.3, 2.43, 2.442])
+    s = zs.summary(lam, model="ham1")
+    ref = h1.summary(lam)
+    for f in ("tau_dc", "delta_m", "tau_d", "e", "impulse", "int_F2"):
+        np.testing.assert_allclose(getattr(s, f), ref[f], rtol=2e-13, atol=1e-15, err_msg=f)
+    assert zs.summary(2.3, model="ham1").tau_d == s.tau_d[1]

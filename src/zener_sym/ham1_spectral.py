@@ -130,6 +130,7 @@ class Ham1Series:
         # 1. K at the global nodes and at pi, from the integrand at the global nodes
         f = np.exp(-np.minimum(a, A_MAX)[:, None] * _GTH) * _GBASE  # (U, N)
         fg = f[None, :, :] * _GG[:, None, :]  # (3, U, N)
+        self._fg = fg
         K = _rowmul(fg, _GKP)  # (3, U, N + 1)
         K, self.K_pi = K[:, :, :-1], np.ascontiguousarray(K[:, :, -1])
         # 2. delta at the global nodes, its series, re-expanded on the pieces
@@ -167,17 +168,26 @@ class Ham1Series:
             np.concatenate([self._seg1.reshape(U * P, n), self._seg2]).T)
 
     # ----------------------------------------------------------------------- end of contact
-    def _seg1_eval(self, rows, t, deriv=False):
-        """delta (and d delta / dt) on the zeroth-order contact at t in [0, 1], one t per row."""
+    def _seg1_eval(self, rows, t, order=0):
+        """d^order delta / dt^order and the next derivative on the zeroth-order contact, at t in
+        [0, 1], one t per row (order 0 with its derivative: Newton on delta; order 1: on delta')."""
         y = t * N_PIECES
         p = np.minimum(y.astype(np.intp), N_PIECES - 1)
         x = 2.0 * (y - p) - 1.0
         c = self._seg1[rows, p]  # (m, n)
-        val = np.einsum("mj,mj->m", c, _C.chebvander(x, N_LOCAL - 1))
-        if not deriv:
-            return val
-        dc = _rowmul(c, _DER.T)
-        return val, np.einsum("mj,mj->m", dc, _C.chebvander(x, N_LOCAL - 1)) * 2.0 * N_PIECES
+        V = _C.chebvander(x, N_LOCAL - 1)
+        out = []
+        for k in (order, order + 1):
+            ck = c
+            for _ in range(k):
+                ck = _rowmul(ck, _DER.T)
+            out.append(np.einsum("mj,mj->m", ck, V) * (2.0 * N_PIECES) ** k)
+        return tuple(out)
+
+    def _K_at(self, rows, t):
+        """K_cc, K_sc, K_ss at t in [0, 1], one t per row, from the global series."""
+        M = _rowmul(_C.chebvander(2.0 * t - 1.0, N_GLOBAL), _GINT @ _GFIT)  # (m, N)
+        return tuple(np.einsum("mn,mn->m", self._fg[g, rows], M) for g in range(3))
 
     def _contact_end(self):
         h1 = _h1()
@@ -197,7 +207,7 @@ class Ham1Series:
             j = np.argmax(neg[inside], axis=1)
             ii = np.arange(r.size)
             g = grid[inside]
-            t = _newton(lambda t: self._seg1_eval(r, t, deriv=True), tg[j - 1], tg[j],
+            t = _newton(lambda t: self._seg1_eval(r, t), tg[j - 1], tg[j],
                         g[ii, j - 1], g[ii, j])
             self.tau_d[r] = _theta(t)[0] / self.omega0[r]
         if (~inside).any():
@@ -272,10 +282,50 @@ class Ham1Series:
         (``ham_numerics.cumulative_integral``), with the force from the series."""
         return self._contact_integral(lambda d: d * np.sqrt(d), rows, tau)
 
-    def int_F2(self):
-        """integral of F^2 over the contact, per row."""
-        rows = np.arange(self.lam.size)
-        return self._contact_integral(lambda d: d ** 3, rows, self.tau_d)
+    def summary(self) -> dict:
+        """First-order summary per row (NaN where ``ok`` is False): tau_dc, delta_m, tau_d, e,
+        F_m, impulse, int_F2, as ``ham1_numpy.summary`` gives them from the quadrature kernels.
+
+        tau_dc is the first zero of delta' on the zeroth-order contact (grid, then Newton on the
+        series); e = -delta'(tau_d) from the generated formula with K at tau_d."""
+        h1 = _h1()
+        U = self.lam.size
+        out = {f: np.full(U, np.nan) for f in ("tau_dc", "delta_m", "e", "impulse", "int_F2")}
+        ok = self.ok.copy()
+        rows = np.flatnonzero(ok)
+        if rows.size:
+            dcoef = _rowmul(self._seg1[rows], _DER.T)
+            grid = _rowmul(dcoef, _SV).reshape(rows.size, -1)  # sign of d delta/dt, t >= 0
+            neg = grid <= 0.0
+            neg[:, 0] = False  # d delta/dt = 0 at t = 0 (d tau/dt = 0 there)
+            found = neg.any(axis=1)
+            ok[rows[~found]] = False  # no maximum before pi/omega0: left to the kernels
+            rows, grid, neg = rows[found], grid[found], neg[found]
+        if rows.size:
+            j = np.argmax(neg, axis=1)
+            ii = np.arange(rows.size)
+            tg = np.arange(grid.shape[1]) / (N_PIECES * _SCAN)
+            t = _newton(lambda t: self._seg1_eval(rows, t, order=1), tg[j - 1], tg[j],
+                        grid[ii, j - 1], grid[ii, j])
+            out["tau_dc"][rows] = _theta(t)[0] / self.omega0[rows]
+            out["delta_m"][rows] = self._seg1_eval(rows, t)[0]
+            td = self.tau_d[rows]
+            lam = self.lam[rows]
+            past = td >= self.tpi[rows]
+            t_d = np.where(past, 1.0, (2.0 / np.pi) * np.arcsin(np.sqrt(np.minimum(
+                td * self.omega0[rows] / np.pi, 1.0))))
+            K = self._K_at(rows, t_d)
+            K = tuple(np.where(past, kp, k) for kp, k in zip(self.K_pi[:, rows], K))
+            out["e"][rows] = -h1.delta_dot_from_K(td, lam, *K)
+            all_rows = np.arange(U)
+            tau_end = np.where(ok, self.tau_d, 0.0)
+            out["impulse"][rows] = self.impulse(all_rows, tau_end)[rows]
+            out["int_F2"][rows] = self._contact_integral(lambda d: d ** 3, all_rows, tau_end)[rows]
+        for v in out.values():
+            v[~ok] = np.nan
+        out["tau_d"] = np.where(ok, self.tau_d, np.nan)
+        out["F_m"] = out["delta_m"] ** 1.5
+        return out
 
     def _contact_integral(self, power, rows, tau):
         rows = np.asarray(rows, dtype=np.intp)

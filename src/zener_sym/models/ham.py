@@ -102,13 +102,13 @@ class Ham0(_HamModel):
 class Ham1(_HamModel):
     name = "ham1"
     description = ("first-order HAM solution, Eq. (42): delta0 + delta1, contact end by root "
-                   "finding, impulse by quadrature of the force")
+                   "finding, impulse by quadrature of the force (per-lambda Chebyshev series)")
 
     def _summary(self, lam, **options):
         backend, dps = _backend(options)
         h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
         if backend == "numpy":
-            return self._finish(h1.summary(lam))
+            return self._finish(_ham1_summary_numpy(h1, lam))
         rows = []
         for x in lam:
             with mpmath.workdps(dps):
@@ -148,6 +148,21 @@ class Ham1(_HamModel):
                 d[i] = float(max(dd, 0))
                 imp[i] = float(m1.impulse(t, x, tau_d=tdx))
         return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
+
+
+def _ham1_summary_numpy(h1, lam):
+    """ham1 summary in float64 from the per-lambda series (``zener_sym.ham1_spectral``), and
+    from the quadrature kernels for the lambda values whose series fail their check."""
+    from .. import ham1_spectral
+
+    u, rows = ham1_spectral.rows_of(lam)
+    v = ham1_spectral.Ham1Series(u).summary()
+    slow = np.isnan(v["tau_d"])
+    if slow.any():
+        k = h1.summary(u[slow])
+        for f in v:
+            v[f][slow] = k[f]
+    return {f: x[rows] for f, x in v.items()}
 
 
 def _ham1_history_numpy(h1, lam, tau, want):

@@ -38,8 +38,8 @@ import numpy as np
 
 from . import ham_numerics as hn
 
-__all__ = ["Ham1Series", "rows_of", "N_GLOBAL", "N_PIECES", "N_LOCAL", "A_MAX",
-           "TAIL_TOL"]
+__all__ = ["Ham1Series", "rows_of", "N_GLOBAL", "N_PIECES", "N_LOCAL", "A_MAX", "TAIL_TOL",
+           "SPAN_PAST"]
 
 _C = np.polynomial.chebyshev
 
@@ -52,10 +52,11 @@ N_LOCAL = 16
 A_MAX = 20.0
 #: A row is used only if the last two coefficients of its series are below this times max|delta|.
 TAIL_TOL = 5e-14
-#: Grid cells per piece for the first sign change of delta; (end in units of pi/omega0, cells)
-#: of the two stages of the search past pi/omega0.
+#: Past pi/omega0 the series covers (1 + SPAN_PAST) pi/omega0: the first-order contact ends by
+#: 1.09 pi/omega0 for 0 <= lambda <= 2.414; a row that needs more goes to the kernels.
+SPAN_PAST = 0.25
+#: Grid cells per piece (and past pi/omega0) for the first sign change of delta.
 _SCAN = 8
-_SCAN_PAST = ((1.5, 8), (3.0, 24))
 
 
 def _first_kind(n):
@@ -95,6 +96,7 @@ _REEXPAND = (_C.chebvander(2.0 * _LT.ravel() - 1.0, N_GLOBAL - 1).T
 # scan grid: _SCAN points per piece from its left end, in local x
 _SX = -1.0 + 2.0 * np.arange(_SCAN) / _SCAN
 _SV = _C.chebvander(_SX, N_LOCAL - 1).T  # (n, _SCAN)
+_SV2 = _C.chebvander(-1.0 + 2.0 * np.arange(_SCAN + 1) / _SCAN, N_LOCAL - 1).T  # both ends
 _DER = np.vstack([_C.chebder(np.eye(N_LOCAL), axis=0), np.zeros((1, N_LOCAL))])  # d/dx, (n, n)
 
 
@@ -135,7 +137,7 @@ class Ham1Series:
         K, self.K_pi = K[:, :, :-1], np.ascontiguousarray(K[:, :, -1])
         # 2. delta at the global nodes, its series, re-expanded on the pieces
         tau_g = _GTH[None, :] / self.omega0[:, None]
-        d = h1.delta_from_K(tau_g, np.broadcast_to(lam[:, None], tau_g.shape), *K)
+        d = h1.delta_from_K(tau_g, lam[:, None], *K)  # lam as a column: params once per row
         gcoef = _rowmul(d, _GFIT.T)
         coef = _rowmul(gcoef, _REEXPAND).reshape(U, P, n)
         # truncation: the last two coefficients, globally and on every piece, against the largest
@@ -145,24 +147,17 @@ class Ham1Series:
                           np.max(np.abs(coef[:, :, -2:]), axis=(1, 2)))
         ok = tried & (tail <= TAIL_TOL * scale) & np.isfinite(scale)
         self._seg1 = coef
-        # 3. end of contact
+        # 3. past pi/omega0 (K frozen at pi): one series in tau on [pi, (1 + SPAN_PAST) pi]/omega0
+        self._seg2_den = SPAN_PAST * self.tpi  # length of that interval
+        tn = self.tpi[:, None] + self._seg2_den[:, None] * (0.5 * (1.0 + _LX))
+        d2 = h1.delta_from_K(tn, lam[:, None], *(k[:, None] for k in self.K_pi))
+        self._seg2 = _rowmul(d2, _LFIT.T)
+        ok &= np.max(np.abs(self._seg2[:, -2:]), axis=1) <= TAIL_TOL * scale
+        # 4. end of contact, on the series
         self.tau_d = np.full(U, np.nan)
         self.ok = ok
         self._contact_end()
-        # 4. the piece past pi/omega0, for rows that reach it
-        self._seg2 = np.zeros((U, n))
-        self._seg2_len = np.maximum(self.tau_d - self.tpi, 0.0)
-        past = self.ok & (self._seg2_len > 0)
-        if past.any():
-            tn = self.tpi[past, None] + self._seg2_len[past, None] * 0.5 * (1.0 + _LX)
-            lp = np.broadcast_to(lam[past, None], tn.shape)
-            d2 = h1.delta_from_K(tn, lp, *(K[past, None] for K in self.K_pi))
-            c2 = _rowmul(d2, _LFIT.T)
-            self._seg2[past] = c2
-            bad2 = np.max(np.abs(c2[:, -2:]), axis=1) > TAIL_TOL * scale[past]
-            self.ok[np.flatnonzero(past)[bad2]] = False
         self.tau_d[~self.ok] = np.nan
-        self._seg2_den = np.where(self._seg2_len > 0, self._seg2_len, 1.0)
         # coefficient table for evaluation: rows r*P + p (pieces), then U*P + r (past pi/omega0)
         self._cT = np.ascontiguousarray(
             np.concatenate([self._seg1.reshape(U * P, n), self._seg2]).T)
@@ -190,65 +185,43 @@ class Ham1Series:
         return tuple(np.einsum("mn,mn->m", self._fg[g, rows], M) for g in range(3))
 
     def _contact_end(self):
-        h1 = _h1()
+        """tau_d: the first sign change of delta after 0 on a grid (_SCAN cells per piece, then
+        _SCAN cells past pi/omega0), refined by Newton on the series. A row without one before
+        (1 + SPAN_PAST) pi/omega0 is left to the kernels (ok = False)."""
         rows = np.flatnonzero(self.ok)
         if rows.size == 0:
             return
-        # sign of delta on a grid of t (left ends of _SCAN cells per piece), then t = 1
-        grid = _rowmul(self._seg1[rows], _SV).reshape(rows.size, -1)
-        d_pi = h1.delta_from_K(self.tpi[rows], self.lam[rows], *self.K_pi[:, rows])
-        grid = np.concatenate([grid, d_pi[:, None]], axis=1)
+        n1 = N_PIECES * _SCAN
+        grid = np.concatenate([_rowmul(self._seg1[rows], _SV).reshape(rows.size, n1),
+                               _rowmul(self._seg2[rows], _SV2)], axis=1)
         neg = grid <= 0.0
         neg[:, 0] = False  # delta(0) = 0: contact starts there
-        inside = neg.any(axis=1)
-        tg = np.arange(grid.shape[1]) / (N_PIECES * _SCAN)
-        if inside.any():
-            r = rows[inside]
-            j = np.argmax(neg[inside], axis=1)
-            ii = np.arange(r.size)
-            g = grid[inside]
-            t = _newton(lambda t: self._seg1_eval(r, t), tg[j - 1], tg[j],
-                        g[ii, j - 1], g[ii, j])
+        found = neg.any(axis=1)
+        self.ok[rows[~found]] = False
+        rows, grid, neg = rows[found], grid[found], neg[found]
+        j = np.argmax(neg, axis=1)
+        ii = np.arange(rows.size)
+        lo_f, hi_f = grid[ii, j - 1], grid[ii, j]
+        # the grid's column n1 is delta at pi/omega0 twice: as t = 1 and as x = -1 past it
+        first = j <= n1
+        if first.any():
+            r, jf = rows[first], j[first]
+            tg = np.arange(n1 + 1) / n1
+            t = _newton(lambda t: self._seg1_eval(r, t), tg[jf - 1], tg[jf], lo_f[first],
+                        hi_f[first])
             self.tau_d[r] = _theta(t)[0] / self.omega0[r]
-        if (~inside).any():
-            r = rows[~inside]
-            tpi = self.tpi[r]
-            lam = self.lam[r]
-            K = self.K_pi[:, r]
-            # first sign change on (pi, 1.5 pi], then (1.5 pi, 3 pi] (up to 3 pi/omega0, as
-            # contact_end), in phase omega0 tau
-            ii = np.arange(r.size)
-            lo, f_lo = tpi.copy(), d_pi[~inside].copy()
-            hi, f_hi = np.full(r.size, np.nan), np.full(r.size, np.nan)
-            start = 1.0
-            for stop, cells in _SCAN_PAST:
-                todo = np.isnan(hi)
-                if not todo.any():
-                    break
-                q = ii[todo]
-                tg2 = tpi[q, None] * (start + (stop - start) * np.arange(1, cells + 1) / cells)
-                vals = h1.delta_from_K(tg2, np.broadcast_to(lam[q, None], tg2.shape),
-                                       *(k[q, None] for k in K))
-                neg2 = vals <= 0.0
-                found = neg2.any(axis=1)
-                j = np.argmax(neg2, axis=1)
-                jj = np.arange(q.size)
-                prev_t = np.where(j > 0, tg2[jj, j - 1], lo[q])
-                prev_f = np.where(j > 0, vals[jj, j - 1], f_lo[q])
-                lo[q] = np.where(found, prev_t, tg2[:, -1])
-                f_lo[q] = np.where(found, prev_f, vals[:, -1])
-                hi[q] = np.where(found, tg2[jj, j], np.nan)
-                f_hi[q] = np.where(found, vals[jj, j], np.nan)
-                start = stop
-            if np.isnan(hi).any():
-                bad = lam[np.isnan(hi)][0]
-                raise ValueError(f"no end of contact (delta = 0) found before tau = 3 pi/omega0 "
-                                 f"at lambda = {bad!r}")
+        if (~first).any():
+            r, jp = rows[~first], j[~first] - n1
+            xg = -1.0 + 2.0 * np.arange(_SCAN + 1) / _SCAN
+            c = self._seg2[r]
 
-            def fun(tau):
-                return (h1.delta_from_K(tau, lam, *K), h1.delta_dot_from_K(tau, lam, *K))
+            def fun(x):
+                V = _C.chebvander(x, N_LOCAL - 1)
+                return (np.einsum("mj,mj->m", c, V),
+                        np.einsum("mj,mj->m", _rowmul(c, _DER.T), V))
 
-            self.tau_d[r] = _newton(fun, lo, hi, f_lo, f_hi)
+            x = _newton(fun, xg[jp - 1], xg[jp], lo_f[~first], hi_f[~first])
+            self.tau_d[r] = self.tpi[r] + self._seg2_den[r] * (0.5 * (1.0 + x))
 
     # ------------------------------------------------------------------------- evaluation
     def delta(self, rows, tau):
@@ -265,7 +238,7 @@ class Ham1Series:
         p = np.minimum(t.astype(np.intp), N_PIECES - 1)
         x1 = 2.0 * (t - p) - 1.0
         on1 = tau < tpi
-        x2 = np.clip((tau - tpi) * (2.0 / self._seg2_den.take(rows)) - 1.0, -1.0, 1.0)
+        x2 = np.minimum((tau - tpi) * (2.0 / self._seg2_den.take(rows)) - 1.0, 1.0)
         x = np.where(on1, x1, x2)
         idx = np.where(on1, rows * N_PIECES + p, self.lam.size * N_PIECES + rows)
         d = hn.clenshaw_take(self._cT, idx, x)

@@ -176,3 +176,12 @@ def test_summary_through_the_api_falls_back_near_the_critical_lambda():
     for f in ("tau_dc", "delta_m", "tau_d", "e", "impulse", "int_F2"):
         np.testing.assert_allclose(getattr(s, f), ref[f], rtol=2e-13, atol=1e-15, err_msg=f)
     assert zs.summary(2.3, model="ham1").tau_d == s.tau_d[1]
+
+
+def test_series_serve_every_lambda_up_to_2_413():
+    """The fallback is for the last 1% below lam_crit only, and the fixed span past pi/omega0
+    holds every first-order contact end."""
+    lam = np.linspace(0.0, 2.413, 400)
+    s = hs.Ham1Series(lam)
+    assert s.ok.all()
+    assert np.max(s.tau_d / s.tpi) < 1.0 + hs.SPAN_PAST

@@ -80,11 +80,12 @@ _GS, _GC = np.sin(_GTH), np.cos(_GTH)
 _GBASE = np.sqrt(_GS) * 0.5 * _GDTH
 _GG = np.stack([_GC * _GC, _GS * _GC, _GS * _GS])
 _GINT = _C.chebint(np.eye(N_GLOBAL), lbnd=-1.0, axis=0)  # coefficients of the antiderivative
+_GINTFIT = _GINT @ _GFIT  # integrand values at the nodes -> coefficients of K
 
 
 def _k_matrix(t):
     """Matrix taking integrand values at the N_GLOBAL nodes to K at the points t (in [0, 1])."""
-    return (_C.chebvander(2.0 * np.asarray(t) - 1.0, N_GLOBAL) @ _GINT @ _GFIT).T
+    return (_C.chebvander(2.0 * np.asarray(t) - 1.0, N_GLOBAL) @ _GINTFIT).T
 
 
 _GKP = _k_matrix(np.append(_GT, 1.0))  # (N, N + 1): K at the global nodes, then at pi
@@ -181,7 +182,7 @@ class Ham1Series:
 
     def _K_at(self, rows, t):
         """K_cc, K_sc, K_ss at t in [0, 1], one t per row, from the global series."""
-        M = _rowmul(_C.chebvander(2.0 * t - 1.0, N_GLOBAL), _GINT @ _GFIT)  # (m, N)
+        M = _rowmul(_C.chebvander(2.0 * t - 1.0, N_GLOBAL), _GINTFIT)  # (m, N)
         return tuple(np.einsum("mn,mn->m", self._fg[g, rows], M) for g in range(3))
 
     def _contact_end(self):
@@ -243,11 +244,6 @@ class Ham1Series:
         idx = np.where(on1, rows * N_PIECES + p, self.lam.size * N_PIECES + rows)
         d = hn.clenshaw_take(self._cT, idx, x)
         return np.where(tau < td, np.maximum(d, 0.0), 0.0)
-
-    def force(self, rows, tau):
-        """Contact force delta^{3/2} (45) at ``tau`` for ``rows``."""
-        d = self.delta(rows, tau)
-        return d * np.sqrt(d)
 
     def impulse(self, rows, tau):
         """Impulse (47) int_0^min(tau, tau_d) F dtau: a Chebyshev antiderivative per row on

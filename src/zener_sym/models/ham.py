@@ -186,11 +186,8 @@ def _ham1_history_numpy(h1, lam, tau, want):
         td = h1.contact_end(u[~series.ok])[np.searchsorted(u[~series.ok], lam_s)]
         if want & {"delta", "force"}:
             ds = np.where(tau_s < td, np.maximum(h1.delta(tau_s, lam_s), 0.0), 0.0)
-            out["delta"] = np.array(out["delta"])
-            out["force"] = np.array(out["force"])
             out["delta"][slow], out["force"][slow] = ds, ds * np.sqrt(ds)
         if need_imp:
-            out["impulse"] = np.array(out["impulse"])
             out["impulse"][slow] = h1.impulse(tau_s, lam_s, tau_d=td)
     if need_imp:
         out["velocity"] = 1.0 - out["impulse"]

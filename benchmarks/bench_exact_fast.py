@@ -6,7 +6,8 @@
 
 Prints (1) the summary speed ratio for n lambda in [0, 5] against ``exact.solve`` (DOP853 with the
 end-of-compression event) at rtol 1e-10, (2) the history ratio for many lambda at once against the
-scipy loop at rtol 1e-8, (3) work-precision points (seconds per lambda, worst relative error of
+scipy loop at rtol 1e-8 (both timed by ``zener_sym.bench.exact_fast_targets``, as ``zener-sym
+bench`` times them), with the history errors of both against scipy at rtol 1e-13, (3) work-precision points (seconds per lambda, worst relative error of
 every summary field against the mpmath reference ``exact_mp`` at dps 20) for the table and for
 scipy at several tolerances. ``work_precision()`` returns those rows for the benchmark charts.
 """
@@ -19,6 +20,7 @@ import numpy as np
 
 import zener_sym as zs
 from zener_sym import exact, exact_mp
+from zener_sym.bench import exact_fast_targets
 
 FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2", "xi")
 
@@ -32,38 +34,24 @@ def _best(f, repeat=5):
     return best, out
 
 
-def bench_summary(n: int) -> dict:
-    lams = np.linspace(0.0, 5.0, n)
-    t_fast, _ = _best(lambda: zs.summary(lams, model="exact"))
-    t0 = time.perf_counter()
-    for x in lams:
-        exact.solve(x, rtol=1e-10)
-    t_loop = time.perf_counter() - t0
-    return {"n": n, "fast_s": t_fast, "loop_s": t_loop, "ratio": t_loop / t_fast}
-
-
-def bench_history(m: int, k: int) -> dict:
+def history_errors(m: int, k: int) -> dict:
+    """Worst history error (delta over delta_m, impulse) of the tables and of the scipy loop at
+    rtol 1e-8, against scipy at rtol 1e-13, on every (m // 10)-th of m lambda in [0, 5] and k tau
+    up to 1.05 tau_d."""
     lams = np.linspace(0.0, 5.0, m)
     tau_d = zs.summary(lams, model="exact", backend="scipy", rtol=1e-10).tau_d
     tau = np.linspace(0.0, 1.0, k)[None, :] * 1.05 * tau_d[:, None]
-    t_fast, h = _best(lambda: zs.history(lams[:, None], tau, model="exact"))
-    t0 = time.perf_counter()
-    for i, x in enumerate(lams):
-        exact.solve(x, rtol=1e-8).history(tau[i])
-    t_loop = time.perf_counter() - t0
-    # accuracy of both against scipy at rtol 1e-13 (relative to each field's scale)
+    h = zs.history(lams[:, None], tau, model="exact")
     err_fast = err_loop = 0.0
-    for i, x in enumerate(lams[:: max(1, m // 10)]):
-        j = i * max(1, m // 10)
-        ref = exact.solve(x, rtol=1e-13)
+    for j in range(0, m, max(1, m // 10)):
+        ref = exact.solve(lams[j], rtol=1e-13)
         g = ref.history(tau[j])
-        lo = exact.solve(x, rtol=1e-8).history(tau[j])
+        lo = exact.solve(lams[j], rtol=1e-8).history(tau[j])
         err_fast = max(err_fast, np.abs(h.delta[j] - g["delta"]).max() / ref.delta_m,
                        np.abs(h.impulse[j] - g["impulse"]).max())
         err_loop = max(err_loop, np.abs(lo["delta"] - g["delta"]).max() / ref.delta_m,
                        np.abs(lo["impulse"] - g["impulse"]).max())
-    return {"m": m, "k": k, "fast_s": t_fast, "loop_s": t_loop, "ratio": t_loop / t_fast,
-            "err_fast": err_fast, "err_loop": err_loop}
+    return {"err_fast": err_fast, "err_loop": err_loop}
 
 
 def _worst(vals: dict, refs: list) -> float:
@@ -107,13 +95,14 @@ def main(argv=None) -> int:
     p.add_argument("--k", type=int, default=200, help="tau values per lambda for the history")
     p.add_argument("--plot", help="write the work-precision chart to this PNG")
     a = p.parse_args(argv)
-    s = bench_summary(a.n)
-    print(f"summary, {s['n']} lambda in [0, 5]: table {s['fast_s'] * 1e3:.2f} ms, scipy DOP853 "
-          f"loop rtol 1e-10 {s['loop_s']:.2f} s, ratio {s['ratio']:.0f}x")
-    h = bench_history(a.m, a.k)
-    print(f"history, {h['m']} lambda x {h['k']} tau: table {h['fast_s'] * 1e3:.1f} ms "
-          f"(error {h['err_fast']:.1e}), scipy loop rtol 1e-8 {h['loop_s']:.2f} s "
-          f"(error {h['err_loop']:.1e}), ratio {h['ratio']:.0f}x")
+    s = exact_fast_targets.summary_target(a.n)
+    print(f"summary, {a.n} lambda in [0, 5]: table {s['fast_s'] * 1e3:.2f} ms, scipy DOP853 "
+          f"loop rtol 1e-10 {s['slow_s']:.2f} s, ratio {s['ratio']:.0f}x")
+    h = exact_fast_targets.history_target(a.m, a.k)
+    e = history_errors(a.m, a.k)
+    print(f"history, {a.m} lambda x {a.k} tau: table {h['fast_s'] * 1e3:.1f} ms "
+          f"(error {e['err_fast']:.1e}), scipy loop rtol 1e-8 {h['slow_s']:.2f} s "
+          f"(error {e['err_loop']:.1e}), ratio {h['ratio']:.0f}x")
     rows = work_precision()
     print("\nwork-precision (summary, worst relative error of all fields vs exact_mp dps 20):")
     print("| method | s per lambda | worst rel. error |\n|---|---|---|")

@@ -39,7 +39,7 @@ def envelopes(lams=LAMBDAS, ranges=((0.0, 1.0), (0.0, 2.0), (0.0, 2.4)), n_tau=4
     sums = {m: summary(lams, model=m) for m in ("ham0", "ham1")}
     T = 1.05 * np.maximum(ex.tau_d, np.maximum(sums["ham0"].tau_d, sums["ham1"].tau_d))
     tau = T[:, None] * np.linspace(0.0, 1.0, n_tau)  # one grid per lambda, both contacts
-    fe = np.array([history(lam, tau[i], model="exact").force for i, lam in enumerate(lams)])
+    fe = history(lams[:, None], tau, model="exact").force
     for model in ("ham0", "ham1"):
         s = sums[model]
         per = {f: _rel(getattr(s, f), getattr(ex, f)) for f in FIELDS}

@@ -19,7 +19,7 @@ import time
 import numpy as np
 
 import zener_sym as zs
-from zener_sym import exact, exact_mp
+from zener_sym.exact import solver as exact, mp as exact_mp
 from zener_sym.bench import exact_fast_targets
 
 FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2", "xi")

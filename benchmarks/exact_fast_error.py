@@ -7,7 +7,7 @@ The grid lambda = 5 (i + 1/2) / n, i = 0..n-1, plus 0 and 5, is not aligned with
 Chebyshev nodes. For each lambda the reference is ``exact_mp.solve(lam, dps)``; the summary error
 is relative per field (absolute for xi at lambda = 0, where xi = 0), the history error is the
 largest difference on 400 times in [0, 1.02 tau_d] divided by the field's scale (delta_m, F_m,
-1, 1). These numbers back ``exact_fast.SUMMARY_RTOL`` and ``HISTORY_ATOL``.
+1, 1). These numbers back ``zener_sym.exact.table.SUMMARY_RTOL`` and ``HISTORY_ATOL``.
 """
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ import argparse
 import numpy as np
 
 import zener_sym as zs
-from zener_sym import exact_fast, exact_mp
+from zener_sym.exact import table as exact_fast, mp as exact_mp
 
 FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2", "xi")
 

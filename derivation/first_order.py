@@ -53,7 +53,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from .steps import MP_DPS, Context, max_rel_residual, run_part, symbolic_zero
+from .steps import MP_DPS, Context, max_rel_residual, symbolic_zero
 
 __all__ = ["derive", "check_antiderivative", "CHECK_LAMBDAS", "check_thetas"]
 
@@ -367,6 +367,3 @@ def _split_ok(f_elem, f_sqrt, delta0, lam, beta, w, tau):
         worst = max(abs(fa(*p) / fb(*p) - 1) for p in pts)
     return ok_elem and no_frac and worst < 1e-35, f"elem part exact; sqrt part rel diff {mpmath.nstr(worst, 3)}"
 
-
-if __name__ == "__main__":  # pragma: no cover
-    run_part("first_order")

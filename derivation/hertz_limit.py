@@ -17,7 +17,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from .steps import MP_DPS, Context, run_part, symbolic_zero
+from .steps import MP_DPS, Context, symbolic_zero
 
 __all__ = ["derive", "HUNTER_CONSTANT"]
 
@@ -103,6 +103,3 @@ def derive(ctx: Context) -> dict:
     ctx.eq("53", sp.Symbol(r"\bar F_{Reed}"), want_r, "Reed's pulse (6) made dimensionless")
     return set(ctx.expr)
 
-
-if __name__ == "__main__":  # pragma: no cover
-    run_part("hertz_limit")

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .steps import Context, run_part, symbolic_zero
+from .steps import Context, symbolic_zero
 
 __all__ = ["derive"]
 
@@ -115,6 +115,3 @@ def derive(ctx: Context) -> dict:
            "order p^1, with (31): delta1(0) = delta1'(0) = 0")
     return {"taylor_sqrt", "taylor_32", "order0_eq", "order1_eq"}
 
-
-if __name__ == "__main__":  # pragma: no cover
-    run_part("homotopy")

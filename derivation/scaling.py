@@ -22,7 +22,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from .steps import Context, run_part, symbolic_zero
+from .steps import Context, symbolic_zero
 
 __all__ = ["derive", "PHYSICAL_SYMBOLS", "DIMENSIONS"]
 
@@ -186,6 +186,3 @@ def derive(ctx: Context) -> dict:
     ctx.eq("76", sp.Symbol(r"\xi"), xi_energy, r"ratio of energy loss, $= 2\lambda\int\bar F^2 d\tau$")
     return set(ctx.expr)
 
-
-if __name__ == "__main__":  # pragma: no cover
-    run_part("scaling")

@@ -14,7 +14,7 @@ import mpmath
 import sympy as sp
 
 __all__ = ["Step", "Log", "Context", "SYMBOLS", "symbolic_zero", "max_rel_residual", "mp_max_rel_residual",
-           "MP_DPS", "latex", "run_part"]
+           "MP_DPS", "latex"]
 
 #: Working precision (decimal digits) of every mpmath check.
 MP_DPS = 40
@@ -143,20 +143,3 @@ def latex(e) -> str:
     if isinstance(e, str):
         return e
     return sp.latex(e, order="lex", ln_notation=False, mul_symbol=None, inv_trig_style="abbreviated")
-
-
-def run_part(name: str, checks: bool = True, echo=print) -> Context:
-    """Run part ``name`` (a module of this package) on top of the parts before it, checking only
-    that part (for ``python -m zener_sym.derivation.<name>``)."""
-    from . import registry
-
-    ctx = Context(checks=checks)
-    ctx.log.echo = echo
-    for part in registry.PARTS:
-        mine = part.__module__.rsplit(".", 1)[-1] == name
-        ctx.checks = checks and mine
-        part(ctx)
-        if mine:
-            break
-    print(f"{'OK' if ctx.log.ok else 'FAILED'}: {len(ctx.log.steps)} steps")
-    return ctx

@@ -13,7 +13,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from .steps import Context, run_part, symbolic_zero
+from .steps import Context, symbolic_zero
 
 __all__ = ["derive"]
 
@@ -132,6 +132,3 @@ def _num_equal(a, b, lam, lams, dps=40, tol=1e-30):
         worst = max(abs(fa(mpmath.mpf(x)) / fb(mpmath.mpf(x)) - 1) for x in lams)
     return worst < tol, f"max rel difference {mpmath.nstr(worst, 3)}"
 
-
-if __name__ == "__main__":  # pragma: no cover
-    run_part("zeroth_order")

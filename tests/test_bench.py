@@ -44,8 +44,8 @@ def test_stability_classes():
 
 def test_cached_reference_matches_a_fresh_mpmath_solve():
     ref = reference.load()
-    assert "exact_mp" in ref["source"]
-    from zener_sym import exact_mp
+    assert "exact.mp" in ref["source"]
+    from zener_sym.exact import mp as exact_mp
 
     lam = 1.01
     s = exact_mp.solve(lam, dps=30)

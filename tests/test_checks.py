@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import zener_sym as zs
-from zener_sym import checks
+from zener_sym.scene import checks
 
 
 def _codes(res):

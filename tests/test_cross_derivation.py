@@ -34,7 +34,7 @@ def test_delta_ham1_two_derivations_agree(reg):
 
 @pytest.mark.slow
 def test_hunter_reed_pulses_agree_with_formulas(reg):
-    from zener_sym import formulas as fm
+    from zener_sym.models import formulas as fm
 
     tau_sym = reg.symbols["tau"]
     taus = np.linspace(0.05, 3.1, 7)

@@ -1,7 +1,7 @@
 """envelopes.build measures what it claims: known perturbations come out as their size."""
 import pytest
 
-from zener_sym import envelopes
+from zener_sym.scene import envelopes
 from zener_sym.models import REGISTRY
 
 from _fake_models import Perturbed

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 import zener_sym as zs
-from zener_sym import exact, exact_fast
-from zener_sym import exact_table_build as build
+from zener_sym.exact import solver as exact, table as exact_fast
+from zener_sym.exact import table_build as build
 from zener_sym.generated import exact_table
 
 FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2")
@@ -149,7 +149,7 @@ def test_compare_detects_a_changed_coefficient():
 @pytest.mark.slow
 def test_table_rebuild_agrees_numerically():
     """`zener-sym exact-table --check`: a rebuild agrees with the committed coefficients."""
-    from zener_sym import exact_table_cmd
+    from zener_sym.cli import exact_table as exact_table_cmd
 
     assert exact_table_cmd.run(check=True) == 0
 
@@ -159,7 +159,7 @@ def test_table_rebuild_agrees_numerically():
 def test_against_mpmath_reference(lam):
     """Every summary field within the documented bound of the mpmath Taylor integrator (dps 20),
     and the history within its bound of the reference's own history."""
-    from zener_sym import exact_mp
+    from zener_sym.exact import mp as exact_mp
 
     r = exact_mp.solve(lam, dps=20)
     s = zs.summary(lam, model="exact", backend="table")

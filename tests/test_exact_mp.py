@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import zener_sym as zs
-from zener_sym import exact, exact_mp
+from zener_sym.exact import solver as exact, mp as exact_mp
 
 SUMMARY = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2", "xi")
 LAMS = (0.0, 0.1, 0.3, 0.6, 1.01, 2.0, 3.5, 5.0, 7.5, 10.0)

@@ -1,7 +1,8 @@
 """generate --check: generated/ and FORMULAS.md are fresh, and a stale file is caught with a diff."""
 import shutil
 
-from zener_sym import codegen, generate_cmd
+from zener_sym import codegen
+from zener_sym.cli import generate as generate_cmd
 from zener_sym.derivation import formulas
 
 

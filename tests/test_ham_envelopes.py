@@ -5,7 +5,7 @@ The bounds are the measured envelopes (README table) rounded up a little; the pa
 """
 import pytest
 
-from zener_sym.ham_envelopes import envelope_markdown, envelopes
+from zener_sym.report.ham_envelopes import envelope_markdown, envelopes
 
 
 @pytest.fixture(scope="module")

@@ -8,7 +8,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import zener_sym as zs
-from zener_sym import scaling
+from zener_sym.scene import scaling
 
 
 def _sympy_scaling():

@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 
 import zener_sym as zs
-from zener_sym import cli, report
+from zener_sym import cli
+from zener_sym.report import build as report
 
 
 @pytest.fixture(scope="module")

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import zener_sym as zs
-from zener_sym.units import parse_quantity
+from zener_sym.scene.units import parse_quantity
 
 GOOD = dict(radius=1e-3, thickness=2e-3, v0=1.0)
 

@@ -4,7 +4,7 @@ import math
 import pytest
 
 import zener_sym as zs
-from zener_sym import envelopes
+from zener_sym.scene import envelopes
 from zener_sym.models import REGISTRY
 
 from _fake_models import Perturbed

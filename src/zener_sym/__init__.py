@@ -8,11 +8,10 @@ and numeric kernels generated from that derivation.
 """
 from .api import History, Summary, history, summary
 from .models import REGISTRY, FieldUnavailableError
-from .checks import ZenerWarning
-from .materials import (ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TABLE1_SPHERE,
-                        Material)
-from .scene import Scene, SceneResult
-from .select import Selection, select_model
+from .scene.checks import ZenerWarning
+from .scene.materials import ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TABLE1_SPHERE, Material
+from .scene.scene import Scene, SceneResult
+from .scene.select import Selection, select_model
 
 __version__ = "0.1.0"
 

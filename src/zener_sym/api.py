@@ -110,12 +110,9 @@ def summary(lam, model: str | None = None, **options):
     ValueError
         For a bad lambda, an unknown model or option, or lambda outside the model's validity.
     """
-    from .scene import Scene
-
-    if isinstance(lam, Scene):
-        rtol = options.pop("rtol", 1e-3)
-        quantity = options.pop("quantity", "all")
-        return lam.result(model=model, rtol=rtol, quantity=quantity, **options)
+    if callable(getattr(lam, "summary", None)):
+        # A Scene answers for itself (this layer does not import the scene layer above it).
+        return lam.summary(model=model, **options)
     if model is None:
         model = "exact"
     m, arr = _validated(model, lam)

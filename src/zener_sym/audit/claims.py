@@ -1,6 +1,6 @@
 """The paper's numeric claims, each checked against an independent reference.
 
-The reference is the exact Zener ODE (10) integrated by :mod:`zener_sym.exact` (accurate to about
+The reference is the exact Zener ODE (10) integrated by :mod:`zener_sym.exact.solver` (accurate to about
 1e-10), not the paper's FEM: the claims are about approximations of Eq. (10), so the ODE is the
 right yardstick; where the paper's wording names its FEM, the note says so. Rounded constants are
 compared with the derived value at the printed number of digits. Claims about the HAM models use
@@ -15,7 +15,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from .. import exact as _exact
+from ..exact import solver as _exact
 from . import derived as D
 from . import printed as P
 from .printed import SYM
@@ -44,7 +44,7 @@ def _exact_summary(lams: tuple):
 def delta_m_exact(lam_value: float, rtol: float = 1e-11) -> float:
     """delta_m of Eq. (10) by integrating the compression phase only (cheap at large lambda).
 
-    Same phases as :func:`zener_sym.exact.solve` (u = sqrt(delta) from the start, then tau), but
+    Same phases as :func:`zener_sym.exact.solver.solve` (u = sqrt(delta) from the start, then tau), but
     stopping at the end of compression, whose duration stays short when lambda is large.
     """
     lv = float(lam_value)

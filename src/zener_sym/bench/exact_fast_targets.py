@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import exact
+from ..exact import solver as exact
 from .timing import median_time
 
 

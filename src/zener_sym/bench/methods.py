@@ -13,7 +13,7 @@ from typing import Callable
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .. import exact
+from ..exact import solver as exact
 from ..models import REGISTRY, FieldUnavailableError
 from .reference import QUANTITIES
 

@@ -27,9 +27,9 @@ def compute(lambdas=LAMBDAS, n_tau=N_TAU, dps=30) -> dict:
     """Reference summary and force history; mpmath path if present, else scipy at rtol 1e-13."""
     out = {"lambdas": list(lambdas), "n_tau": n_tau, "summary": {}, "tau": {}, "force": {}}
     if importlib.util.find_spec("zener_sym.exact_mp") is not None:
-        from .. import exact_mp
+        from ..exact import mp as exact_mp
 
-        out["source"] = f"zener_sym.exact_mp at dps={dps}"
+        out["source"] = f"zener_sym.exact.mp at dps={dps}"
         for lam in lambdas:
             s = exact_mp.solve(lam, dps=dps)
             tau = [float(s.tau_d) * j / (n_tau - 1) for j in range(n_tau)]
@@ -38,9 +38,9 @@ def compute(lambdas=LAMBDAS, n_tau=N_TAU, dps=30) -> dict:
             out["tau"][repr(lam)] = tau
             out["force"][repr(lam)] = [float(x) for x in h["force"]]
     else:
-        from .. import exact
+        from ..exact import solver as exact
 
-        out["source"] = "zener_sym.exact (scipy DOP853) at rtol=1e-13"
+        out["source"] = "zener_sym.exact.solver (scipy DOP853) at rtol=1e-13"
         for lam in lambdas:
             s = exact.solve(lam, rtol=1e-13, atol=1e-16)
             tau = np.linspace(0.0, s.tau_d, n_tau)

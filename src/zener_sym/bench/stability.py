@@ -13,7 +13,7 @@ import pathlib
 
 import numpy as np
 
-from .. import exact
+from ..exact import solver as exact
 
 CLASSES = ("ok", ">1%", ">10%", "nan", "exception", "refused")
 COLORS = ("#2ca02c", "#ffdd57", "#ff7f0e", "#9467bd", "#d62728", "#bbbbbb")

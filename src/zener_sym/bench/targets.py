@@ -25,7 +25,7 @@ def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200, quick: bool = False) -> d
     dense output at rtol 1e-6 (the textbook set-up: tau from 0, guarded RHS, event delta = 0).
 
     Both sides give the force and nothing else: ham1 is asked for ``fields="force"`` (its contact
-    end and delta, from the per-lambda series of ``zener_sym.ham1_spectral``), as the comparator
+    end and delta, from the per-lambda series of ``zener_sym.ham.spectral``), as the comparator
     computes no impulse."""
     if "ham1" not in REGISTRY:
         return None

@@ -10,6 +10,7 @@ from __future__ import annotations
 import difflib
 import hashlib
 import importlib
+import importlib.util
 import pathlib
 
 import sympy
@@ -26,10 +27,12 @@ _PKG = pathlib.Path(__file__).resolve().parent.parent
 
 
 def generated_dir() -> pathlib.Path:
-    """The folder ``zener_sym.generated`` is imported from (the repo's generated/ when editable)."""
-    import zener_sym.generated as g
+    """The folder ``zener_sym.generated`` is imported from (the repo's generated/ when editable).
 
-    return pathlib.Path(g.__file__).resolve().parent
+    Located, not imported: codegen sits below the code it writes, and must run when that code is
+    stale or broken."""
+    spec = importlib.util.find_spec("zener_sym.generated")
+    return pathlib.Path(spec.submodule_search_locations[0]).resolve()
 
 
 def derivation_dir() -> pathlib.Path:

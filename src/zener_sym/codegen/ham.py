@@ -3,7 +3,7 @@
 Every formula in the emitted files is printed by SymPy's code printers from the expressions of
 ``ham_exprs.ham_expressions()`` (with common subexpressions shared through ``sympy.cse``); the
 surrounding templates here only hold signatures, input checks and calls into the hand-written
-numerics (``zener_sym.sqrt_quad`` for the square-root integrals, ``zener_sym.ham_numerics`` for
+numerics (``zener_sym.ham.quadrature`` for the square-root integrals, ``zener_sym.ham.chebyshev`` for
 root finding and contact integrals). Output is deterministic: cse uses numbered symbols and its
 canonical order, and nothing is printed from an unordered container.
 """
@@ -79,8 +79,8 @@ def _summary0_outputs(e):
 _NP_PRELUDE = '''
 import numpy
 
-from zener_sym import ham_numerics as _hn
-from zener_sym.sqrt_quad import sqrt_integrals
+from zener_sym.ham import chebyshev as _hn
+from zener_sym.ham.quadrature import sqrt_integrals
 
 _p3 = _hn.p3
 
@@ -154,7 +154,7 @@ def force(tau, lam):
 
 def impulse(tau, lam):
     """Impulse (47) int_0^tau F dtau = omega0^(-5/2) K_s(3 beta / (2 omega0), omega0 tau), frozen
-    after pi/omega0; K_s by Gauss-Jacobi quadrature (zener_sym.sqrt_quad)."""
+    after pi/omega0; K_s by Gauss-Jacobi quadrature (zener_sym.ham.quadrature)."""
     tau, lam = _inputs(tau, lam)
     k, beta, omega0 = params(lam)
 {a_imp_block}
@@ -178,7 +178,7 @@ _NP_HAM1 = '''
 
 def _K(beta, omega0, tau):
     """Square-root integrals K_cc, K_sc, K_ss at a = beta / (2 omega0), theta = omega0 tau, by
-    Gauss-Jacobi quadrature (zener_sym.sqrt_quad: why not scipy hyp2f1 is explained there); frozen at
+    Gauss-Jacobi quadrature (zener_sym.ham.quadrature: why not scipy hyp2f1 is explained there); frozen at
     theta = pi (delta0 < 0 beyond: its contact force and sqrt(delta0) are zero)."""
 {a_block}
     K = sqrt_integrals(a, omega0 * tau, ("cc", "sc", "ss"))
@@ -212,7 +212,7 @@ def delta_from_K(tau, lam, Kcc, Ksc, Kss):
     """delta0 + delta1 (42) for given square-root integrals K_cc, K_sc, K_ss at omega0 tau.
 
     The inputs are not checked: ``delta`` passes its quadrature values, and
-    ``zener_sym.ham1_spectral`` its Chebyshev-series values, both on validated arrays."""
+    ``zener_sym.ham.spectral`` its Chebyshev-series values, both on validated arrays."""
     k, beta, omega0 = params(lam)
 {delta_block}
     return out
@@ -268,7 +268,7 @@ def contact_end(lam, tau_dc=None):
 
 def _contact_integral(fun, tau, lam, tau_d):
     """int_0^min(tau, tau_d) fun dtau, split at pi/omega0 (where the sqrt terms switch off); one
-    Chebyshev antiderivative per lambda serves every tau (zener_sym.ham_numerics)."""
+    Chebyshev antiderivative per lambda serves every tau (zener_sym.ham.chebyshev)."""
     k, beta, omega0 = params(lam)
     end = numpy.minimum(tau, tau_d)
     tpi = numpy.pi / omega0
@@ -285,7 +285,7 @@ def _force2(tau, lam):
 
 def impulse(tau, lam, tau_d=None):
     """Impulse (47): int_0^min(tau, tau_d) max(delta, 0)^(3/2) dtau, a smoothstep-mapped Chebyshev
-    antiderivative per lambda (zener_sym.ham_numerics.cumulative_integral); frozen after the end
+    antiderivative per lambda (zener_sym.ham.chebyshev.cumulative_integral); frozen after the end
     of contact."""
     tau, lam = _inputs(tau, lam)
     if tau_d is None:
@@ -353,7 +353,7 @@ def build_ham1_numpy() -> str:
 _MP_PRELUDE = '''
 import mpmath
 
-from zener_sym import ham_numerics_mp as _hn
+from zener_sym.ham import mp as _hn
 
 _p3 = _hn.p3_mp
 

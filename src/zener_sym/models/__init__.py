@@ -1,6 +1,6 @@
 """Every model of the impact behind one interface; each registers itself in ``REGISTRY``."""
 from .base import (HISTORY_FIELDS, REGISTRY, SUMMARY_FIELDS, FieldUnavailableError, Model,
-                   get_model, register)
+    get_model, register)
 from . import exact  # noqa: F401  (registers "exact")
 from . import ham  # noqa: F401  (registers "ham0", "ham1")
 from . import pulses  # noqa: F401  (registers "hertz", "hunter", "reed", "oneway")

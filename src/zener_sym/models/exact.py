@@ -4,8 +4,8 @@ high precision (mpmath).
 ``backend``:
 
 ``"auto"`` (default)
-    lambda in the table's range [0, 5] (``exact_fast.LAM_MIN``, ``LAM_MAX``) is evaluated from the
-    tables (error bounds ``exact_fast.SUMMARY_RTOL``, ``HISTORY_ATOL``); any other lambda is
+    lambda in the table's range [0, 5] (``zener_sym.exact.table.LAM_MIN``, ``LAM_MAX``) is evaluated from the
+    tables (error bounds ``zener_sym.exact.table.SUMMARY_RTOL``, ``HISTORY_ATOL``); any other lambda is
     integrated with scipy. Giving ``rtol`` or ``method`` (integrator options) integrates all.
 ``"table"``
     tables only; lambda outside their range is a ValueError (never extrapolated).
@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import exact as _exact
-from .. import exact_fast as _fast
+from ..exact import solver as _exact
+from ..exact import table as _fast
 from .base import Model, register
 
 BACKENDS = ("auto", "table", "scipy", "mpmath")
@@ -66,7 +66,7 @@ class ExactModel(Model):
             if "dps" in options:
                 raise ValueError("option 'dps' goes with backend='mpmath'")
             return {float(x): _exact.solve(x, **options) for x in np.unique(lam_values)}
-        from .. import exact_mp
+        from ..exact import mp as exact_mp
 
         bad = set(options) - {"dps"}
         if bad:

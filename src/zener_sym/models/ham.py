@@ -119,7 +119,7 @@ class Ham1(_HamModel):
                 k, beta, omega0 = m1.params(float(x))
                 tpi = mpmath.pi / omega0
                 f2 = lambda t: m1.force(t, float(x)) ** 2  # noqa: E731
-                from ..ham_numerics_mp import contact_integral_mp
+                from ..ham.mp import contact_integral_mp
 
                 J = contact_integral_mp(f2, 0, min(td, tpi)) + contact_integral_mp(f2, tpi, max(td, tpi))
                 e = -m1.delta_dot(td, float(x))
@@ -151,9 +151,9 @@ class Ham1(_HamModel):
 
 
 def _ham1_summary_numpy(h1, lam):
-    """ham1 summary in float64 from the per-lambda series (``zener_sym.ham1_spectral``), and
+    """ham1 summary in float64 from the per-lambda series (``zener_sym.ham.spectral``), and
     from the quadrature kernels for the lambda values whose series fail their check."""
-    from .. import ham1_spectral
+    from ..ham import spectral as ham1_spectral
 
     u, rows = ham1_spectral.rows_of(lam)
     v = ham1_spectral.Ham1Series(u).summary()
@@ -166,10 +166,10 @@ def _ham1_summary_numpy(h1, lam):
 
 
 def _ham1_history_numpy(h1, lam, tau, want):
-    """ham1 histories in float64: the per-lambda Chebyshev series of ``zener_sym.ham1_spectral``,
+    """ham1 histories in float64: the per-lambda Chebyshev series of ``zener_sym.ham.spectral``,
     and the quadrature kernels for the lambda values whose series fail their own check (near
     the critical lambda)."""
-    from .. import ham1_spectral
+    from ..ham import spectral as ham1_spectral
 
     u, rows = ham1_spectral.rows_of(lam)
     series = ham1_spectral.Ham1Series(u)

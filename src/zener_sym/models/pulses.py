@@ -4,7 +4,7 @@
   lambda is given (lambda is ignored; every field is the lambda = 0 value).
 * ``hunter``: Hunter's sine, delta = delta_m sin(Omega tau), F = A sin(Omega tau) (Eq. 52);
   ``reed``: Reed's F = delta_m^{3/2} sin^{3/2}(Omega tau) (Eq. 53); constants derived in
-  ``zener_sym.formulas``. Both are symmetric pulses of a rigid half-space: lambda is ignored, and
+  ``zener_sym.models.formulas``. Both are symmetric pulses of a rigid half-space: lambda is ignored, and
   they give no restitution (e, xi): the pulse alone does not say what energy is lost.
 * ``oneway``: the Hertz pulse drives the plate without feeling it: xi = 2 lambda int F_Hertz^2
   (the work of Eq. 74 in the scaling of Eq. 10), e = sqrt(1 - xi). It gives e, xi and the Hertz
@@ -16,8 +16,8 @@ import functools
 
 import numpy as np
 
-from .. import formulas as fm
-from ..sqrt_quad import sqrt_integrals
+from . import formulas as fm
+from ..ham.quadrature import sqrt_integrals
 from .base import REGISTRY, Model, register
 
 

@@ -1,0 +1,126 @@
+"""``zener-sym bench [--quick] --out DIR``: work-precision tables and charts, stability map,
+speed targets, and a BENCHMARKS.md summarising them."""
+from __future__ import annotations
+
+import csv
+import pathlib
+import platform
+import time
+
+import numpy as np
+
+from . import methods as methods_mod, reference, stability, targets, workprecision
+
+
+def _md_table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(r[h]) for h in header) + " |" for r in rows]
+    return "\n".join(lines)
+
+
+def representative(methods):
+    """One method per family for the stability map: the sweep's 1e-6 point, or the only one.
+    mpmath backends are left out (about 1 s per point); they evaluate the same closed forms as
+    the numpy kernels, which the tests hold to 1e-10 of them."""
+    by_fam = {}
+    for m in methods:
+        if m.extra.get("stride", 1) > 1:
+            continue
+        rt = m.extra.get("rtol")
+        if m.family not in by_fam or (rt is not None and abs(np.log10(rt) + 6) < 0.01):
+            by_fam[m.family] = m
+    return list(by_fam.values())
+
+
+def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str:
+    t_start = time.perf_counter()
+    out.mkdir(parents=True, exist_ok=True)
+    ref = reference.load()
+    log(f"reference: {ref['source']}")
+    cat = methods_mod.catalogue(quick=quick)
+    rows = workprecision.measure(cat, ref, quick=quick, log=log)
+    workprecision.write_csv(rows, out / "work_precision.csv")
+    charts = workprecision.charts(rows, out, ref["source"])
+    stab, lams, s = stability.run(representative(cat), quick=quick)
+    stability.write_csv(stab, lams, s, out / "stability.csv")
+    stability.chart(stab, lams, s, out / "stability.png")
+    tg = targets.run(quick=quick)
+    if tg:
+        with open(out / "targets.csv", "w", newline="") as fh:
+            w = csv.DictWriter(fh, fieldnames=list(tg[0]))
+            w.writeheader()
+            w.writerows(tg)
+    elapsed = time.perf_counter() - t_start
+
+    best = {}
+    for r in rows:
+        if r["status"] == "ok" and np.isfinite(r["max_rel_error"]):
+            key = (r["family"], r["quantity"])
+            if key not in best or r["max_rel_error"] < best[key]["max_rel_error"]:
+                best[key] = r
+    q_rows = []
+    for (fam, q), r in sorted(best.items()):
+        q_rows.append({"family": fam, "quantity": q, "best error": f"{r['max_rel_error']:.2e}",
+                       "lambdas": r["lambdas"],
+                       "at (method)": r["method"], "s per lambda": f"{r['seconds_per_lambda']:.2e}"})
+    failed = [r for r in rows if r["status"] != "ok"]
+    md = [
+        "# Benchmarks: speed against accuracy",
+        "",
+        f"Produced by `zener-sym bench{' --quick' if quick else ''} --out {out}` in {elapsed:.0f} s "
+        f"on {platform.machine()} / Python {platform.python_version()} "
+        f"({len(cat)} methods). Errors are against {ref['source']} at lambda = "
+        f"{', '.join(f'{x:g}' for x in ref['lambdas'])} ({ref['n_tau']} history points each).",
+        "",
+        "Time: the first call gives the values and warms up; when it took less than 0.3 s "
+        "(0.05 s with --quick), further calls are timed until that much time has passed and the "
+        "median is kept, otherwise the first call's time is kept. Divided by the number of "
+        "lambda. All methods are timed in one process, one after the other, so they share the "
+        "machine's load. The mpmath backends (about 1 s per history point) are measured on "
+        "every 10th history point and their force-history time is scaled by 10.",
+        "",
+        "## Work-precision charts",
+        "",
+        *[f"![{p.stem}]({p.name})" for p in charts],
+        "",
+        "## Best accuracy reached per method family",
+        "",
+        _md_table(["family", "quantity", "best error", "lambdas", "at (method)", "s per lambda"],
+                  q_rows),
+        "",
+        "(`lambdas`: how many of the reference lambda values the error is over; a model valid "
+        "only below some lambda is measured below it.)",
+        "",
+        "## Failures in the work-precision run",
+        "",
+        (_md_table(["method", "quantity", "status"], failed) if failed else "none"),
+        "",
+        "## Stability map",
+        "",
+        "![stability](stability.png)",
+        "",
+        "Smallest lambda in [0, 10] at which each class first appears (force history over the "
+        "contact; `refused` = a ValueError from the API, the intended answer outside a model's "
+        "validity):",
+        "",
+        _md_table(["method"] + list(stability.CLASSES[1:]), stability.summary_rows(stab, lams)),
+        "",
+        "## Speed targets (ratios measured side by side in this run)",
+        "",
+        (_md_table(["target", "grid", "fast_s", "slow_s", "ratio", "required", "met"],
+                   [{**r, "fast_s": f"{r['fast_s']:.3g}", "slow_s": f"{r['slow_s']:.3g}",
+                     "ratio": f"{r['ratio']:.3g}"} for r in tg])
+         if tg else "no target applies yet (the models they compare are not registered)"),
+        "",
+    ]
+    text = "\n".join(md)
+    (out / "BENCHMARKS.md").write_text(text)
+    if markdown is not None:  # a copy elsewhere (e.g. the repo root), images linked relative to it
+        import os
+
+        rel = pathlib.Path(os.path.relpath(out.resolve(), markdown.resolve().parent))
+        linked = text.replace("](work_precision_", f"]({rel.as_posix()}/work_precision_")
+        linked = linked.replace("](stability.png)", f"]({rel.as_posix()}/stability.png)")
+        markdown.write_text(linked)
+    log(f"wrote {out}/BENCHMARKS.md, charts and CSV tables in {elapsed:.0f} s")
+    return text

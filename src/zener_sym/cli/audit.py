@@ -1,0 +1,46 @@
+"""``zener-sym audit [--json] [--write] [--check]``: the paper audit as a table, JSON or AUDIT.md."""
+from __future__ import annotations
+
+import difflib
+import json
+import sys
+
+from ..audit.markdown import audit_md_path, cached_results, markdown
+from ..audit.run import summary_line
+
+__all__ = ["add_parser"]
+
+
+def _run(args) -> int:
+    results = cached_results()
+    if args.json:
+        print(json.dumps([r.as_dict() for r in results], indent=1))
+        return 0
+    text = markdown(results)
+    if args.check:
+        path = audit_md_path()
+        old = path.read_text() if path.exists() else ""
+        if old == text:
+            print(f"{path.name} is up to date ({summary_line(results)})")
+            return 0
+        sys.stdout.writelines(difflib.unified_diff(
+            old.splitlines(True), text.splitlines(True), f"{path.name} (committed)",
+            f"{path.name} (regenerated)"))
+        print(f"\n{path.name} is stale: run `zener-sym audit --write`", file=sys.stderr)
+        return 1
+    if args.write:
+        path = audit_md_path()
+        path.write_text(text)
+        print(f"wrote {path} ({summary_line(results)})")
+        return 0
+    print(text)
+    return 0
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("audit", help="check the paper's printed equations and claims")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--json", action="store_true", help="print a JSON list of the items")
+    g.add_argument("--write", action="store_true", help="write AUDIT.md at the repository root")
+    g.add_argument("--check", action="store_true", help="fail with a diff if AUDIT.md is stale")
+    p.set_defaults(func=_run)

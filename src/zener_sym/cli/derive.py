@@ -1,0 +1,53 @@
+"""``zener-sym derive [--markdown] [--check]``: re-derive the HAM solution, checking every step.
+
+Prints one line per step (equation, PASS/FAIL, time, claim, method, result). ``--markdown``
+writes FORMULAS.md at the root of the source checkout; ``--check`` fails with a unified diff
+when the committed FORMULAS.md is stale. Imports the derivation only when run (offline code).
+"""
+from __future__ import annotations
+
+import sys
+import time
+
+__all__ = ["add_parser", "run"]
+
+
+def run(markdown: bool = False, check: bool = False, out=print) -> int:
+    from ..derivation import formulas, registry
+    from ..derivation.steps import format_step
+
+    t0 = time.perf_counter()
+    d = registry.run(checks=True, echo=lambda line: out(line))
+    out(f"derivation: {d.summary()}")
+    status = 0 if d.ok else 1
+    if not d.ok:
+        out("derivation FAILED: " + "; ".join(format_step(s) for s in d.steps if not s.passed))
+    try:
+        if check:
+            fresh, diff = formulas.check(d)
+            if fresh:
+                out(f"{formulas.FILENAME} is up to date")
+            else:
+                out(diff)
+                out(f"{formulas.FILENAME} is stale: run `zener-sym derive --markdown`")
+                status = 1
+        if markdown:
+            if not d.ok:
+                out(f"not writing {formulas.FILENAME}: the derivation has failed steps")
+                return 1
+            path = formulas.write(d)
+            out(f"wrote {path}")
+    except RuntimeError as exc:  # not a source checkout
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    out(f"total {time.perf_counter() - t0:.1f} s")
+    return status
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("derive", help="re-derive the HAM solution with SymPy, checking every step")
+    p.add_argument("--markdown", action="store_true",
+                   help="write the derived equations to FORMULAS.md at the source checkout's root")
+    p.add_argument("--check", action="store_true",
+                   help="fail with a diff if the committed FORMULAS.md is stale")
+    p.set_defaults(func=lambda args: run(markdown=args.markdown, check=args.check))

@@ -1,0 +1,31 @@
+"""``zener-sym envelopes [--check]``: measure every model's error envelope against exact and
+write the table that :func:`zener_sym.select_model` reads (:mod:`zener_sym.scene.envelopes`)."""
+from __future__ import annotations
+
+from ..scene.envelopes import build, compare, load, save
+
+
+def _run(args) -> int:
+    new = build()
+    if args.check:
+        diffs = compare(load(), new, decades=args.decades)
+        if diffs:
+            print("envelope table is stale (run 'zener-sym envelopes'):")
+            for d in diffs:
+                print("  " + d)
+            return 1
+        print(f"envelope table up to date ({len(new['models'])} models)")
+        return 0
+    where = save(new)
+    print(f"wrote {where} ({len(new['models'])} models: {', '.join(new['models'])})")
+    return 0
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("envelopes", help="measure every model's error envelope against exact "
+                       "and write the table select_model reads")
+    p.add_argument("--check", action="store_true",
+                   help="rebuild in memory; exit 1 if the committed table is stale")
+    p.add_argument("--decades", type=float, default=0.5,
+                   help="tolerance of --check in decades of relative error (default 0.5)")
+    p.set_defaults(func=_run)

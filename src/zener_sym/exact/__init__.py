@@ -1,0 +1,8 @@
+"""The exact solution of Zener's equation (10): direct integration and its fast tables.
+
+- :mod:`.solver`: scipy integration with analytic phases in u = sqrt(delta) at both ends of the
+  contact (the reference in float64);
+- :mod:`.mp`: the same problem in mpmath at any precision (the independent reference);
+- :mod:`.table`: Chebyshev tables of the solution, evaluated in numpy (the default path);
+- :mod:`.table_build`: builds those tables offline into ``generated/exact_table.py``.
+"""

@@ -1,0 +1,15 @@
+"""Numerics behind the homotopy-analysis (HAM) kernels.
+
+The generated kernels (``zener_sym.generated``) call the leaf helpers here, which import nothing
+else of the package:
+
+- :mod:`.quadrature`: Gauss-Jacobi quadrature of the square-root integrals (float64);
+- :mod:`.chebyshev`: Chebyshev nodes, series, antiderivatives and the ``p3`` helper;
+- :mod:`.mp`: their mpmath counterparts.
+
+Built on top of the generated kernels:
+
+- :mod:`.spectral`: per-lambda Chebyshev series of the first-order solution (ham1's fast path);
+- :mod:`.kernel_check`: the numpy kernels against the mpmath ones (``python -m
+  zener_sym.ham.kernel_check``).
+"""

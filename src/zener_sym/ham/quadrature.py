@@ -1,0 +1,136 @@
+"""Real-valued float64 evaluation of the first-order "square-root" integrals, vectorised in numpy.
+
+The first-order HAM correction (Eqs. 36-42) needs, with t = omega0 * s the phase,
+
+    K_g(a, theta) = integral_0^theta exp(-a t) g(t) sqrt(sin t) dt,    0 <= theta <= pi,
+
+for a few trigonometric monomials g (cos^2 t, sin t cos t, sin^2 t, and sin t for the zeroth-order
+impulse), with a = beta / (2 omega0) >= 0 (or 3 beta / (2 omega0)). Their closed forms are Gauss
+hypergeometric functions 2F1(-1/2, s; s + 1; exp(2 i theta)) with complex s = (m - 1/2)/2 + i a/2,
+which ``scipy.special.hyp2f1`` cannot take (complex parameters), and whose series converge slowly on
+the unit circle near z = 1 (theta -> 0 and theta -> pi). So numpy evaluates the integrals instead:
+
+* Choice: Gauss-Jacobi quadrature with the square-root singularity in the weight, which is exact to
+  rounding because what is left of the integrand is analytic. On [0, T] (T <= pi/2) substitute
+  t = T u: sqrt(sin t) = sqrt(T u) sqrt(sinc), so the integral is
+  T^{3/2} * integral_0^1 u^{1/2} [exp(-a T u) g(T u) sqrt(sin(T u)/(T u))] du, a Gauss-Jacobi rule
+  with weight u^{1/2}. The bracket is analytic on a Bernstein ellipse reaching u = pi/T >= 2.
+* Past pi/2 the integral is K(pi) - integral_theta^pi, and the piece near pi uses the same rule
+  with the weight at the pi end (sin(pi - x) = sin x; sin and cos of pi - x are formed from x, so
+  nothing is lost to rounding of pi - x).
+* exp(-a t) is entire, but a large a (near the critical lambda, omega0 -> 0) makes it steep: the
+  left piece is cut at t = CUT / a, past which the integrand is below exp(-CUT) = 1e-26 of its
+  scale, so the quadrature never sees more than exp(-CUT) of decay. With N_NODES = 64 nodes the
+  rule integrates exp(-x u) for x <= CUT to rounding (checked against the 2F1 closed form at 30
+  digits in tests/test_ham_quadrature.py).
+* Past theta = pi (end of zeroth-order contact) the integrals are frozen at their values at pi:
+  delta0 < 0 there, so delta0's contact force and sqrt(delta0) are zero (the physical
+  continuation; the mpmath kernels do the same).
+
+Nodes and weights are module-level constants computed once at import; the points go on a
+trailing axis, so there is no Python loop over evaluation points.
+"""
+from __future__ import annotations
+
+import numpy as np
+from scipy.special import roots_jacobi
+
+__all__ = ["K_FUNCS", "sqrt_integrals", "N_NODES", "CUT"]
+
+#: Number of Gauss-Jacobi nodes per piece.
+N_NODES = 64
+#: Largest exponent a * t the left piece integrates; beyond it the integrand is < exp(-CUT).
+CUT = 60.0
+
+_x, _w = roots_jacobi(N_NODES, 0.0, 0.5)  # weight (1 + x)^{1/2} on [-1, 1]
+#: nodes u in (0, 1) and weights for integral_0^1 u^{1/2} h(u) du
+_U = (1.0 + _x) / 2.0
+_W = _w / 2.0**1.5
+
+#: name -> g(sin t, cos t)
+K_FUNCS = {
+    "cc": lambda s, c: c * c,
+    "sc": lambda s, c: s * c,
+    "ss": lambda s, c: s * s,
+    "s": lambda s, c: s,
+    "one": lambda s, c: np.ones_like(s),
+}
+
+
+def _sin_over(s, x):
+    """sin(x)/x from sin(x), with the limit 1 at x = 0 (T = 0 puts every node at 0)."""
+    return np.divide(s, x, out=np.ones_like(x), where=x > 0)
+
+
+def _left(a, T, names):
+    """integral_0^T exp(-a t) g(t) sqrt(sin t) dt for 0 <= T <= pi/2 (arrays broadcast)."""
+    x = T[..., None] * _U  # trailing axis: nodes
+    s, c = np.sin(x), np.cos(x)
+    base = np.exp(-a[..., None] * x) * np.sqrt(_sin_over(s, x)) * _W
+    scale = T * np.sqrt(T)
+    return {n: scale * np.sum(base * K_FUNCS[n](s, c), axis=-1) for n in names}
+
+
+def _right(a, r, names):
+    """integral_{pi - r}^{pi} exp(-a t) g(t) sqrt(sin t) dt for 0 <= r <= pi/2."""
+    x = r[..., None] * _U  # distance from pi
+    s, c = np.sin(x), -np.cos(x)  # sin and cos of t = pi - x
+    # exp(-a t) with t = pi - x >= pi/2: never overflows
+    base = np.exp(-a[..., None] * (np.pi - x)) * np.sqrt(_sin_over(s, x)) * _W
+    scale = r * np.sqrt(r)
+    return {n: scale * np.sum(base * K_FUNCS[n](s, c), axis=-1) for n in names}
+
+
+def sqrt_integrals(a, theta, names=("cc", "sc", "ss")) -> dict:
+    """K_g(a, theta) = integral_0^min(theta, pi) exp(-a t) g(t) sqrt(sin t) dt, for g in ``names``.
+
+    Parameters
+    ----------
+    a : array_like
+        Decay rate, finite and >= 0.
+    theta : array_like
+        Phase(s), finite and >= 0; values beyond pi give the frozen value at pi.
+    names : sequence of str
+        Keys of ``K_FUNCS``.
+
+    Returns
+    -------
+    dict
+        name -> float64 array of the broadcast shape of ``a`` and ``theta``.
+    """
+    a, theta = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(theta, dtype=float))
+    if not (np.all(np.isfinite(a)) and np.all(a >= 0)):
+        raise ValueError("sqrt_integrals: the decay rate a must be finite and >= 0")
+    if not (np.all(np.isfinite(theta)) and np.all(theta >= 0)):
+        raise ValueError("sqrt_integrals: theta must be finite and >= 0")
+    shape = a.shape
+    a = a.reshape(-1)
+    th = np.minimum(theta, np.pi).reshape(-1)
+    if a.size > _CHUNK:
+        # blocks of points keep the (points x nodes) temporaries in cache-sized memory
+        parts = [_flat(a[i:i + _CHUNK], th[i:i + _CHUNK], names) for i in range(0, a.size, _CHUNK)]
+        return {n: np.concatenate([p[n] for p in parts]).reshape(shape) for n in names}
+    return {n: v.reshape(shape) for n, v in _flat(a, th, names).items()}
+
+
+_CHUNK = 2048
+
+
+def _flat(a, th, names):
+    """sqrt_integrals on validated 1-D arrays, th already clipped to [0, pi]."""
+    half = np.pi / 2.0
+    with np.errstate(divide="ignore", over="ignore"):  # subnormal a: CUT / a = inf, no cap
+        cap = np.where(a > 0, CUT / np.where(a > 0, a, 1.0), np.inf)
+    T = np.minimum(np.minimum(th, half), cap)
+    out = _left(a, T, names)
+    past = th > half
+    if np.any(past):
+        # K(theta) = K(pi/2) + [integral_{pi/2}^{pi} - integral_{theta}^{pi}]
+        ap = a[past]
+        # the piece over [pi/2, pi] depends on a only: once per distinct a
+        ua, inv = np.unique(ap, return_inverse=True)
+        full = {n: v[inv] for n, v in _right(ua, np.full(ua.shape, half), names).items()}
+        tail = _right(ap, np.pi - th[past], names)
+        for n in names:
+            out[n][past] += full[n] - tail[n]
+    return out

@@ -1,0 +1,15 @@
+"""Number and table formatting shared by the report's sections."""
+from __future__ import annotations
+
+#: The lambda values of the paper's figures 5, 10 and 11 (and 0, Hertz's rigid half-space).
+PAPER_LAMBDAS = (0.0, 0.11, 1.01, 1.51, 1.99)
+
+
+def fmt(x, digits=10) -> str:
+    return f"{x:.{digits}g}"
+
+
+def markdown_table(header, rows) -> str:
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines)

@@ -1,0 +1,178 @@
+"""The package's imports run one way: no cycle, and no layer imports a layer above it.
+
+The imports are read from the source with ``ast`` (nothing is imported): module-level and
+function-level ``import``/``from ... import`` statements, and ``importlib.import_module`` calls
+with a literal module name. docs/architecture.md explains the layers.
+"""
+from __future__ import annotations
+
+import ast
+import pathlib
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+#: Where each import namespace lives in the checkout (pyproject's package-dir).
+FOLDERS = {
+    "zener_sym": ROOT / "src" / "zener_sym",
+    "zener_sym.derivation": ROOT / "derivation",
+    "zener_sym.generated": ROOT / "generated",
+}
+
+#: The layers, lowest first; a module belongs to the layer of its longest matching prefix.
+#: "leaf helpers" import nothing of the package and serve every layer above them.
+LAYERS = (
+    ("derivation", ("zener_sym.derivation",)),
+    ("codegen", ("zener_sym.codegen",)),
+    ("leaf helpers", ("zener_sym.params", "zener_sym.ham.quadrature", "zener_sym.ham.chebyshev",
+                      "zener_sym.ham.mp")),
+    ("generated", ("zener_sym.generated",)),
+    ("numerics", ("zener_sym.exact", "zener_sym.ham")),
+    ("models", ("zener_sym.models",)),
+    ("api", ("zener_sym.api",)),
+    # the package facade (zener_sym/__init__.py) re-exports the scene layer
+    ("scene", ("zener_sym.scene", "zener_sym")),
+    ("report/bench/audit", ("zener_sym.report", "zener_sym.bench", "zener_sym.audit")),
+    ("cli", ("zener_sym.cli", "zener_sym.__main__")),
+)
+
+
+def _modules() -> dict:
+    mods = {}
+    for pkg, folder in FOLDERS.items():
+        for path in sorted(folder.rglob("*.py")):
+            parts = list(path.relative_to(folder).with_suffix("").parts)
+            if parts[-1] == "__init__":
+                parts = parts[:-1]
+            mods[".".join([pkg, *parts])] = path
+    return mods
+
+
+MODULES = _modules()
+
+
+def _known(name: str) -> str | None:
+    """The project module an import name refers to (its longest known prefix), or None."""
+    while name:
+        if name in MODULES:
+            return name
+        name = name.rpartition(".")[0]
+    return None
+
+
+def imports_of(module: str, path: pathlib.Path) -> set:
+    """Project modules that ``module`` imports anywhere in its source."""
+    tree = ast.parse(path.read_text(), str(path))
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    found = set()
+    for node in ast.walk(tree):
+        names = []
+        if isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")
+                base = ".".join(base[: len(base) - node.level + 1])
+                base = f"{base}.{node.module}" if node.module else base
+            else:
+                base = node.module or ""
+            # "from pkg import mod" imports the submodule; "from mod import name" the module
+            names = [f"{base}.{a.name}" if f"{base}.{a.name}" in MODULES else base
+                     for a in node.names]
+        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+              and node.func.attr == "import_module" and node.args
+              and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str)):
+            names = [node.args[0].value]
+        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+              and node.func.attr == "import_module" and node.args
+              and isinstance(node.args[0], ast.JoinedStr) and node.args[0].values
+              and isinstance(node.args[0].values[0], ast.Constant)):
+            names = [node.args[0].values[0].value.rstrip(".")]  # f"zener_sym.generated.{name}"
+        for n in names:
+            target = _known(n) if n.startswith("zener_sym") else None
+            if target and target != module:
+                found.add(target)
+    return found
+
+
+GRAPH = {m: imports_of(m, p) for m, p in MODULES.items()}
+
+
+def layer_of(module: str) -> int:
+    best, rank = -1, None
+    for i, (_, prefixes) in enumerate(LAYERS):
+        for p in prefixes:
+            if (module == p or module.startswith(p + ".")) and len(p) > best:
+                best, rank = len(p), i
+    assert rank is not None, f"{module} belongs to no layer: add it to LAYERS and docs/architecture.md"
+    return rank
+
+
+def find_cycle(graph: dict) -> list | None:
+    """One import cycle as a list of modules (first == last), or None."""
+    state, stack = {}, []
+
+    def visit(m):
+        state[m] = "open"
+        stack.append(m)
+        for d in sorted(graph.get(m, ())):
+            if state.get(d) == "open":
+                return stack[stack.index(d):] + [d]
+            if d not in state:
+                found = visit(d)
+                if found:
+                    return found
+        stack.pop()
+        state[m] = "done"
+        return None
+
+    for m in sorted(graph):
+        if m not in state:
+            found = visit(m)
+            if found:
+                return found
+    return None
+
+
+def test_the_reader_sees_the_modules():
+    # a sanity check on the reader itself: known edges of each kind are found
+    assert "zener_sym.api" in GRAPH["zener_sym"]                       # from .api import ...
+    assert "zener_sym.exact.solver" in GRAPH["zener_sym.models.exact"]  # from ..exact import solver
+    assert "zener_sym.ham.quadrature" in GRAPH["zener_sym.generated.ham0_numpy"]  # absolute
+    assert "zener_sym.generated.exact_table" in GRAPH["zener_sym.exact.table"]  # importlib
+    assert "zener_sym.derivation.registry" in GRAPH["zener_sym.cli.derive"]  # inside a function
+
+
+def test_no_import_cycle():
+    assert find_cycle(GRAPH) is None, " -> ".join(find_cycle(GRAPH))
+
+
+def test_cycle_finder_can_fail():
+    assert find_cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == ["a", "b", "c", "a"]
+    assert find_cycle({"a": {"b"}, "b": set()}) is None
+
+
+def test_no_layer_imports_a_layer_above_it():
+    bad = [f"{m} ({LAYERS[layer_of(m)][0]}) imports {d} ({LAYERS[layer_of(d)][0]})"
+           for m, deps in sorted(GRAPH.items()) for d in sorted(deps)
+           if layer_of(d) > layer_of(m)]
+    assert not bad, "\n".join(bad)
+
+
+def test_leaf_helpers_import_nothing_of_the_package():
+    for m in LAYERS[2][1]:
+        assert not GRAPH[m], f"{m} imports {sorted(GRAPH[m])}"
+
+
+def test_derivation_parts_do_not_import_their_registry():
+    for m, deps in GRAPH.items():
+        if m.startswith("zener_sym.derivation.") and m not in ("zener_sym.derivation.registry",
+                                                               "zener_sym.derivation.__main__"):
+            assert "zener_sym.derivation.registry" not in deps, m
+
+
+@pytest.mark.parametrize("folder", ["src/zener_sym"])
+def test_few_plain_modules_at_the_top(folder):
+    plain = sorted(p.name for p in (ROOT / folder).glob("*.py"))
+    assert len(plain) <= 8, plain

@@ -1,0 +1,67 @@
+"""The cumulative contact integral (one Chebyshev antiderivative per lambda) against the per-point
+smoothstep Gauss-Legendre rule and against closed-form integrals."""
+import numpy as np
+import pytest
+
+from zener_sym.ham import chebyshev as hn
+from zener_sym.generated import ham1_numpy as k
+
+
+def test_matches_per_point_quadrature_of_the_first_order_force():
+    lam = np.linspace(0.0, 2.4, 13)[:, None] * np.ones((1, 60))
+    tau = np.linspace(0.0, 6.0, 60)[None, :] * np.ones((13, 1))
+    _, _, omega0 = k.params(lam)
+    tpi = np.pi / omega0
+    td = k.contact_end(lam[:, 0])[:, None] * np.ones((1, 60))
+    end = np.minimum(tau, td)
+    per_point = (hn.contact_integral(k.force, np.zeros_like(end), np.minimum(end, tpi), lam)
+                 + hn.contact_integral(k.force, tpi, np.maximum(end, tpi), lam))
+    cumulative = (hn.cumulative_integral(k.force, 0.0, np.minimum(td, tpi), lam, np.minimum(end, tpi))
+                  + hn.cumulative_integral(k.force, tpi, np.maximum(td, tpi), lam, np.maximum(end, tpi)))
+    np.testing.assert_allclose(cumulative, per_point, rtol=1e-12, atol=1e-14)
+
+
+@pytest.mark.parametrize("p", [1.5, 3.0])
+def test_closed_form_endpoint_singularities(p):
+    # integral_0^x t^p (1 - t)^p dt has the endpoint behaviour of the force; compare with the
+    # regularised incomplete beta function
+    from scipy.special import beta, betainc
+
+    x = np.linspace(0.0, 1.0, 41)
+    got = hn.cumulative_integral(lambda t, lam: t**p * (1 - t) ** p, 0.0, 1.0, np.zeros_like(x), x)
+    want = beta(p + 1, p + 1) * betainc(p + 1, p + 1, x)
+    np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-16)
+    assert abs(got[0]) < 1e-17
+
+
+def test_empty_segment_is_zero():
+    assert hn.cumulative_integral(lambda t, lam: 1.0 + 0 * t, 2.0, 2.0, 0.5, 2.0) == 0.0
+
+
+def test_p3_against_mpmath_on_both_sides_of_the_series_switch():
+    import mpmath
+
+    x = np.concatenate([[0.0, 1e-9, 0.1, 0.4999999, 0.5, 0.5000001, 1.0, 3.0, np.pi, 9.0],
+                        -np.array([0.2, 0.7])])
+    with mpmath.workdps(50):
+        ref = [mpmath.mpf(1) / 3 if v == 0 else
+               (mpmath.sin(v) - v * mpmath.cos(v)) / mpmath.mpf(v) ** 3 for v in x]
+        ref = np.array([float(r) for r in ref])
+    got = hn.p3(x.reshape(3, 4)).ravel()
+    np.testing.assert_allclose(got, ref, rtol=2e-15, atol=0)
+    assert hn.p3(0.3).shape == () and hn.p3(0.3) == hn.p3(np.array([0.3]))[0]
+
+
+def test_clenshaw_take_against_chebval_for_scattered_and_broadcast_rows():
+    rng = np.random.default_rng(3)
+    coef = rng.normal(size=(5, 9))  # 5 rows of 9 coefficients
+    x = rng.uniform(-1.0, 1.0, (5, 7))
+    ref = np.array([np.polynomial.chebyshev.chebval(x[i], coef[i]) for i in range(5)])
+    cT = np.ascontiguousarray(coef.T)
+    column = np.broadcast_to(np.arange(5)[:, None], x.shape)  # a broadcast view
+    np.testing.assert_allclose(hn.clenshaw_take(cT, column, x), ref, rtol=1e-13, atol=1e-13)
+    np.testing.assert_array_equal(hn.clenshaw_take(cT, column, x),
+                                  hn.clenshaw_take(cT, np.array(column), x))
+    perm = rng.permutation(x.size)
+    flat = hn.clenshaw_take(cT, np.array(column).ravel()[perm], x.ravel()[perm])
+    np.testing.assert_allclose(flat, ref.ravel()[perm], rtol=1e-13, atol=1e-13)

@@ -64,26 +64,28 @@ def repo_root() -> Path:
     return root
 
 
-def formulas_path() -> Path:
-    return repo_root() / FILENAME
+def formulas_path(root: Path | None = None) -> Path:
+    """FORMULAS.md in ``root`` (default: the checkout this module runs from)."""
+    return (repo_root() if root is None else Path(root)) / FILENAME
 
 
-def write(derivation) -> Path:
-    """Write FORMULAS.md at the checkout root; returns its path."""
-    path = formulas_path()
+def write(derivation, root: Path | None = None) -> Path:
+    """Write FORMULAS.md at the checkout root (or ``root``); returns its path."""
+    path = formulas_path(root)
     path.write_text(render(derivation), encoding="utf-8")
     return path
 
 
-def check(derivation) -> tuple[bool, str]:
-    """Compare the committed FORMULAS.md with a fresh rendering.
+def check(derivation, root: Path | None = None) -> tuple[bool, str]:
+    """Compare the committed FORMULAS.md (in ``root``, default the checkout) with a fresh
+    rendering.
 
     Returns
     -------
     (fresh, diff)
         ``diff`` is a unified diff (committed -> regenerated), empty when fresh.
     """
-    path = formulas_path()
+    path = formulas_path(root)
     new = render(derivation)
     old = path.read_text(encoding="utf-8") if path.is_file() else ""
     if old == new:

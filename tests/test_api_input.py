@@ -71,3 +71,47 @@ def test_unavailable_field_error_names_field_and_model():
             s.tau_d
     finally:
         del REGISTRY["_partial_test"]
+
+
+# --- shapes: every history field has the broadcast shape of lambda and tau ------------------
+@pytest.mark.parametrize("lam_shape,tau_shape", [
+    ((), ()), ((), (5,)), ((3,), ()), ((3, 1), (5,)), ((2, 1, 1), (1, 3, 4)), ((2, 3, 4), ()),
+])
+def test_history_fields_have_the_broadcast_shape(lam_shape, tau_shape):
+    lam = np.full(lam_shape, 0.7)
+    tau = np.full(tau_shape, 1.3)
+    want = np.broadcast_shapes(lam_shape, tau_shape)
+    h = zs.history(lam, tau)
+    for f in ("tau", "delta", "velocity", "force", "impulse"):
+        assert np.shape(getattr(h, f)) == want, f
+    # every entry is the scalar answer (same lambda and tau everywhere)
+    one = zs.history(0.7, 1.3)
+    np.testing.assert_allclose(h.force, one.force, rtol=1e-14)
+
+
+def test_summary_takes_lambda_of_any_rank():
+    lam = np.array([0.2, 0.9]).reshape(2, 1, 1)
+    s = zs.summary(lam)
+    assert s.e.shape == (2, 1, 1) and s.e[1, 0, 0] == pytest.approx(zs.summary(0.9).e, rel=1e-14)
+
+
+def test_history_default_model_is_exact():
+    assert zs.history(1.0, 2.0).model == "exact" == zs.summary(1.0).model
+
+
+def test_bound_messages_print_the_bound_the_check_uses():
+    import re
+
+    for model in ("exact", "ham1", "oneway"):
+        with pytest.raises(ValueError) as info:
+            zs.summary(5000.0, model=model)
+        m = re.search(r"allowed 0 <= lambda (<=|<) ([0-9.e+]+)", str(info.value))
+        assert m, str(info.value)
+        op, bound = m.group(1), float(m.group(2))
+        # the printed bound is judged as printed: accepted with <=, refused with <
+        if op == "<=":
+            zs.summary(bound, model=model)
+        else:
+            with pytest.raises(ValueError):
+                zs.summary(bound, model=model)
+            zs.summary(np.nextafter(bound, 0), model=model)

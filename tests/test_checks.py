@@ -60,7 +60,7 @@ def test_kirchhoff_warning_for_short_pulse_on_thick_plate():
     sc = zs.Scene("steel", "steel", 1e-3, 20e-3, 5.0)
     with pytest.warns(zs.ZenerWarning):
         res = sc.result(model="exact")
-    omega = math.pi / res.contact_duration
+    omega = math.pi / res.contact_duration_s
     kH = math.sqrt(omega) / (sc.D / (sc.plate.rho * sc.thickness)) ** 0.25 * sc.thickness
     assert kH > 1.0
     assert "kirchhoff" in _codes(res)
@@ -71,9 +71,9 @@ def test_thin_plate_and_large_deflection_warnings():
     sc = zs.Scene(rubber, "steel", 5e-3, 0.2e-3, 5.0)
     with pytest.warns(zs.ZenerWarning):
         res = sc.result(model="exact")
-    a = math.sqrt(sc.radius * res.max_compression)
+    a = math.sqrt(sc.radius * res.max_compression_m)
     assert a > sc.thickness and "thin-plate" in _codes(res)
-    assert res.final_deflection > sc.thickness / 2 and "large-deflection" in _codes(res)
+    assert res.final_deflection_m > sc.thickness / 2 and "large-deflection" in _codes(res)
 
 
 def test_finite_plate_warning_from_return_time():
@@ -82,7 +82,7 @@ def test_finite_plate_warning_from_return_time():
     assert "finite-plate" not in _codes(far)
     # Return time 2b / c_group at omega = pi/t_d; choose b so that it is half the contact time.
     sc = zs.Scene("steel", "glass", **base)
-    t_d = far.contact_duration
+    t_d = far.contact_duration_s
     c_phase = math.sqrt(math.pi / t_d) * (sc.D / (sc.plate.rho * sc.thickness)) ** 0.25
     b = 0.5 * t_d * c_phase  # t_ret = 2b/(2 c_phase) = t_d / 2
     near = zs.Scene("steel", "glass", plate_radius=b, **base).result(model="exact", warn=False)
@@ -93,8 +93,8 @@ def test_yield_warning_against_hertz_pressure():
     base = dict(radius=1e-3, thickness=2e-3, v0=1.0)
     res = zs.Scene("steel", "glass", **base).result(model="exact", warn=False)
     # Hertz: p0 = 3F/(2 pi a^2), a^3 = 3 F R / (4 E*)
-    a = (3 * res.max_force * 1e-3 / (4 * res.scene.E_star)) ** (1 / 3)
-    p0 = 3 * res.max_force / (2 * math.pi * a**2)
+    a = (3 * res.max_force_N * 1e-3 / (4 * res.scene.E_star)) ** (1 / 3)
+    p0 = 3 * res.max_force_N / (2 * math.pi * a**2)
     weak = zs.STEEL.with_yield(0.9 * p0 / 1.6)
     strong = zs.STEEL.with_yield(1.1 * p0 / 1.6)
     r1 = zs.Scene(weak, "glass", **base).result(model="exact", warn=False)

@@ -14,16 +14,15 @@ def test_stale_formulas_fail_with_a_diff(tmp_path, monkeypatch, capsys):
     stale = tmp_path / "FORMULAS.md"
     shutil.copy(formulas.formulas_path(), stale)
     stale.write_text(stale.read_text().replace("=", "==", 1))
-    monkeypatch.setattr(formulas, "formulas_path", lambda: stale)
+    monkeypatch.setattr(formulas, "formulas_path", lambda root=None: stale)
     assert generate_cmd.run(check=True) == 1
     out = capsys.readouterr().out
     assert "FORMULAS.md is STALE" in out and "+++" in out
 
 
-def test_stale_generated_file_fails_with_a_diff(tmp_path, monkeypatch, capsys):
+def test_stale_generated_file_fails_with_a_diff(fake_tree, monkeypatch, capsys):
     monkeypatch.setattr(codegen, "BUILDERS", [("demo.py", "tests.test_generate:_demo_builder")])
-    monkeypatch.setattr(codegen, "generated_dir", lambda: tmp_path)
-    (tmp_path / "demo.py").write_text("x = 2\n")
+    (fake_tree / "generated" / "demo.py").write_text("x = 2\n")
     assert generate_cmd.run(check=True) == 1
     out = capsys.readouterr().out
     assert "-x = 2" in out and "+x = 1" in out and "STALE" in out
@@ -31,3 +30,10 @@ def test_stale_generated_file_fails_with_a_diff(tmp_path, monkeypatch, capsys):
 
 def _demo_builder():
     return "x = 1\n"
+
+
+def test_check_names_the_tree_it_checked(capsys):
+    from conftest import ROOT
+
+    assert generate_cmd.run(check=True) == 0
+    assert str(ROOT / "generated") in capsys.readouterr().out

@@ -115,8 +115,8 @@ def test_scene_results_match_si_integration_of_eq7():
     tt = np.linspace(0, t_d, 4001)
     F = K * np.maximum(sol.sol(tt)[0], 0) ** 1.5
     res = sc.result(model="exact", warn=False)
-    assert res.contact_duration == pytest.approx(t_d, rel=1e-6)
-    assert res.rebound_velocity == pytest.approx(-V_end, rel=1e-6)
-    assert res.max_force == pytest.approx(F.max(), rel=1e-5)
+    assert res.contact_duration_s == pytest.approx(t_d, rel=1e-6)
+    assert res.rebound_speed_m_s == pytest.approx(-V_end, rel=1e-6)
+    assert res.max_force_N == pytest.approx(F.max(), rel=1e-5)
     h = res.history(tt[::400])
-    assert np.allclose(h["force"], F[::400], rtol=1e-5, atol=1e-6 * F.max())
+    assert np.allclose(h["force_N"], F[::400], rtol=1e-5, atol=1e-6 * F.max())

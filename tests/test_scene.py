@@ -19,28 +19,28 @@ def res():
 
 def test_identities(res):
     sc = res.scene
-    assert res.rebound_velocity == pytest.approx(res.restitution * sc.v0, rel=1e-15)
-    assert res.energy_loss == pytest.approx(1 - res.restitution**2, rel=1e-12)
+    assert res.rebound_speed_m_s == pytest.approx(res.e * sc.v0, rel=1e-15)
+    assert res.xi == pytest.approx(1 - res.e**2, rel=1e-12)
     # Hertz: F_m = K delta_m^{3/2} with K = (4/3) E* sqrt(R)
     K = 4 / 3 * sc.E_star * np.sqrt(sc.radius)
-    assert res.max_force == pytest.approx(K * res.max_compression**1.5, rel=1e-12)
+    assert res.max_force_N == pytest.approx(K * res.max_compression_m**1.5, rel=1e-12)
     # final deflection w = alpha * impulse, and impulse = m1 (V0 + e V0) (momentum balance)
-    assert res.final_deflection == pytest.approx(sc.alpha * sc.m1 * sc.v0 * (1 + res.restitution),
+    assert res.final_deflection_m == pytest.approx(sc.alpha * sc.m1 * sc.v0 * (1 + res.e),
                                                  rel=1e-10)
 
 
 def test_histories(res):
     sc = res.scene
-    t = np.linspace(0, 1.2 * res.contact_duration, 241)
+    t = np.linspace(0, 1.2 * res.contact_duration_s, 241)
     h = res.history(t)
-    assert h["force"][0] == 0 and h["velocity"][0] == pytest.approx(sc.v0, rel=1e-15)
-    after = t > res.contact_duration
-    assert np.all(h["force"][after] == 0)
-    assert np.allclose(h["velocity"][after], -res.rebound_velocity, rtol=1e-9)
-    assert np.allclose(h["deflection"][after], res.final_deflection, rtol=1e-9)
-    assert h["force"].max() <= res.max_force * (1 + 1e-12)
+    assert h["force_N"][0] == 0 and h["velocity_m_s"][0] == pytest.approx(sc.v0, rel=1e-15)
+    after = t > res.contact_duration_s
+    assert np.all(h["force_N"][after] == 0)
+    assert np.allclose(h["velocity_m_s"][after], -res.rebound_speed_m_s, rtol=1e-9)
+    assert np.allclose(h["deflection_m"][after], res.final_deflection_m, rtol=1e-9)
+    assert h["force_N"].max() <= res.max_force_N * (1 + 1e-12)
     # momentum: m1 (V0 - V(t)) = int_0^t F dt (trapezoid on a fine grid)
-    tf = np.linspace(0, res.contact_duration, 4001)
+    tf = np.linspace(0, res.contact_duration_s, 4001)
     F = res.force(tf)
     J = np.concatenate([[0], np.cumsum(0.5 * (F[1:] + F[:-1]) * np.diff(tf))])
     assert np.allclose(sc.m1 * (sc.v0 - res.velocity(tf)), J, atol=2e-6 * J[-1])
@@ -54,7 +54,7 @@ def test_summary_with_explicit_model_and_lambda_path_unchanged():
     r = zs.summary(sc, model="exact")
     assert r.model == "exact" and "requested" in r.reason
     s = zs.summary(sc.lam)  # the lambda path still gives the dimensionless Summary
-    assert r.contact_duration == pytest.approx(s.tau_d * sc.T, rel=1e-15)
+    assert r.contact_duration_s == pytest.approx(s.tau_d * sc.T, rel=1e-15)
 
 
 def test_cli_scene(capsys, tmp_path):
@@ -73,7 +73,7 @@ def test_cli_scene(capsys, tmp_path):
 @pytest.mark.parametrize("args,msg", [
     (["--radius=-1mm"], "radius"), (["--v0", "nan"], "v0"), (["--thickness", "2 parsecs"],
                                                             "thickness"),
-    (["--plate", "70GPa,0.6,2700"], "nu"), (["--sphere", "cheese"], "preset"),
+    (["--plate", "70GPa,0.6,2700kg/m^3"], "nu"), (["--sphere", "cheese"], "preset"),
 ])
 def test_cli_scene_bad_input(capsys, args, msg):
     base = {"--sphere": "steel", "--plate": "glass", "--radius": "1mm", "--thickness": "2mm",
@@ -115,6 +115,6 @@ def test_model_without_some_fields(monkeypatch):
     with pytest.warns(zs.ZenerWarning, match="not-checked"):
         r = zs.summary(sc, model="partial")
     ex = zs.summary(sc, model="exact")
-    assert r.restitution is None and r.energy_loss is None and r.final_deflection is None
-    assert r.contact_duration == pytest.approx(ex.contact_duration, rel=1e-15)
+    assert r.e is None and r.xi is None and r.final_deflection_m is None
+    assert r.contact_duration_s == pytest.approx(ex.contact_duration_s, rel=1e-15)
     assert "n/a (not given by model 'partial')" in str(r)

@@ -12,6 +12,7 @@ from .scene.checks import ZenerWarning
 from .scene.materials import ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TABLE1_SPHERE, Material
 from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
+from .scene.compare import Comparison, compare
 
 __version__ = "0.1.0"
 
@@ -25,4 +26,5 @@ def __getattr__(name):
 
 __all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError",
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
-           "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS"]
+           "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
+           "compare", "Comparison", "__version__"]

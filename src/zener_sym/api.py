@@ -109,6 +109,15 @@ def summary(lam, model: str | None = None, **options):
     ------
     ValueError
         For a bad lambda, an unknown model or option, or lambda outside the model's validity.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> s = zs.summary(1.0)                     # exact model
+    >>> round(s.e, 4), round(s.tau_d, 4)
+    (0.1841, 4.3876)
+    >>> zs.summary([0.5, 1.0]).e.shape
+    (2,)
     """
     if callable(getattr(lam, "summary", None)):
         # A Scene answers for itself (this layer does not import the scene layer above it).
@@ -125,20 +134,48 @@ def summary(lam, model: str | None = None, **options):
     return Summary(m, values, scalar=arr.ndim == 0)
 
 
-def history(lam, tau, model: str = "ham1", fields=None, **options) -> History:
+def history(lam, tau, model: str = "exact", fields=None, **options) -> History:
     """Histories delta, velocity, force and impulse at times ``tau`` for ``lam``.
-
-    ``lam`` and ``tau`` broadcast by numpy rules (lam of shape (M, 1) with tau of shape (M, N)
-    gives (M, N)). Past the end of contact delta and the force are 0 and the impulse keeps its
-    final value.
 
     Parameters
     ----------
+    lam : float or array_like
+        Zener's inelasticity parameter lambda >= 0 (Eq. 11).
+    tau : float or array_like
+        Dimensionless times tau = t / T >= 0 (Eq. 9). ``lam`` and ``tau`` broadcast by numpy
+        rules (lam of shape (M, 1) with tau of shape (N,) gives (M, N)); every field has that
+        broadcast shape, () for scalars.
+    model : str
+        One of ``zener_sym.MODELS`` (default "exact", as for ``summary``).
     fields : str or sequence of str, optional
         Only these of ``delta``, ``velocity``, ``force``, ``impulse`` (default: every field the
         model gives). Models that can skip work do: ham1's force alone needs no impulse quadrature.
     **options
         Model options, as for ``summary``.
+
+    Returns
+    -------
+    History
+        ``tau``, ``delta``, ``velocity`` (sphere, 1 - I, Eq. 64), ``force`` (Eq. 45) and
+        ``impulse`` (Eq. 47, also the plate deflection). Past the end of contact delta and the
+        force are 0 and the impulse keeps its final value.
+
+    Raises
+    ------
+    ValueError
+        For a bad lambda or tau, shapes that do not broadcast, an unknown model, field or
+        option, or lambda outside the model's validity.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> h = zs.history(1.0, [0.0, 1.0, 2.0])
+    >>> h.force.shape
+    (3,)
+    >>> float(h.delta[0]), float(h.velocity[0])     # contact starts at delta = 0, velocity 1
+    (0.0, 1.0)
+    >>> zs.history(1.0, 0.5).force.shape   # scalars in, 0-d out
+    ()
     """
     m, arr = _validated(model, lam)
     m.check_options(options)
@@ -152,7 +189,8 @@ def history(lam, tau, model: str = "ham1", fields=None, **options) -> History:
         ) from None
     values = m.history_values(np.ascontiguousarray(lam_b), np.ascontiguousarray(tau_b), want,
                               **options)
-    values = {k: np.asarray(v, dtype=float) for k, v in values.items()}
+    # every field has the broadcast shape, () for scalar lambda and tau
+    values = {k: np.asarray(v, dtype=float).reshape(tau_b.shape) for k, v in values.items()}
     values["tau"] = tau_b.copy()
     _no_silent_nan(values, m)
     skipped = tuple(f for f in m.history_fields if f not in want)

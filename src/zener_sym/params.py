@@ -9,7 +9,7 @@ import numbers
 
 import numpy as np
 
-__all__ = ["as_lambda", "as_tau", "check_lambda_bound"]
+__all__ = ["as_lambda", "as_tau", "check_lambda_bound", "bound_text"]
 
 
 def _as_float_array(value, name: str) -> np.ndarray:
@@ -49,8 +49,6 @@ def as_lambda(lam, *, upper: float | None = None, model: str | None = None) -> n
         If lam is not real, is NaN, infinite, negative, or not below ``upper``.
     """
     arr = _as_float_array(lam, "lambda")
-    if arr.ndim > 2:
-        raise ValueError(f"lambda must be a scalar, a 1-D or a 2-D array, got {arr.ndim} dimensions")
     if arr.size == 0:
         raise ValueError("lambda is empty: give at least one value")
     bad = ~np.isfinite(arr)
@@ -62,13 +60,23 @@ def as_lambda(lam, *, upper: float | None = None, model: str | None = None) -> n
         raise ValueError(
             f"lambda must be >= 0 (0 is a rigid half-space), got {arr[arr < 0].ravel()[0].item()!r}"
         )
-    if upper is not None and (arr >= upper).any():
-        who = f"model {model!r}" if model else "this model"
-        raise ValueError(
-            f"lambda = {arr[arr >= upper].ravel()[0].item()!r} is outside the validity of {who}: "
-            f"allowed 0 <= lambda < {upper:.12g}"
-        )
+    if upper is not None:
+        check_lambda_bound(arr, upper, model or "this model")
     return arr
+
+
+def bound_text(upper: float) -> str:
+    """The range ``0 <= lambda < upper`` as the check applies it, with digits that round-trip.
+
+    A bound stored as the float just above a round number (``np.nextafter(1000, inf)``, an
+    inclusive 1000) reads ``0 <= lambda <= 1000``; any other bound prints its shortest exact
+    decimal, so a value typed from the message is judged the way the message says.
+    """
+    upper = float(upper)
+    below = float(np.nextafter(upper, -np.inf))
+    if float(f"{below:.12g}") == below and float(f"{upper:.12g}") != upper:
+        return f"0 <= lambda <= {below:.12g}"
+    return f"0 <= lambda < {upper!r}"
 
 
 def check_lambda_bound(arr: np.ndarray, upper: float, model: str, reason: str = "") -> None:
@@ -77,7 +85,7 @@ def check_lambda_bound(arr: np.ndarray, upper: float, model: str, reason: str = 
         extra = f" ({reason})" if reason else ""
         raise ValueError(
             f"lambda = {arr[arr >= upper].ravel()[0].item()!r} is outside the validity of model "
-            f"{model!r}: allowed 0 <= lambda < {upper:.12g}{extra}"
+            f"{model!r}: allowed {bound_text(upper)}{extra}"
         )
 
 

@@ -45,8 +45,11 @@ def markdown(results) -> str:
     return "\n".join(lines) + "\n"
 
 
-def audit_md_path() -> Path:
-    """AUDIT.md at the repository root (next to pyproject.toml); refuses outside a checkout."""
+def audit_md_path(root: Path | None = None) -> Path:
+    """AUDIT.md in ``root`` (default: the repository root next to pyproject.toml, when this
+    package runs from a checkout); ValueError outside a checkout."""
+    if root is not None:
+        return Path(root) / "AUDIT.md"
     root = Path(__file__).resolve().parents[3]
     if not (root / "pyproject.toml").exists():
         raise ValueError(f"AUDIT.md lives in a source checkout; no pyproject.toml at {root}")

@@ -3,24 +3,52 @@
 One module per subcommand in this package; each exposes ``add_parser(subparsers)``, which
 registers the subcommand and sets ``func``, and leaves the work to the layer that owns it. To add
 a command, add its module here and to ``COMMANDS``.
+
+Errors of the command line are one line on stderr and exit code 2.
 """
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 
-from . import audit, bench, derive, envelopes, exact_table, generate, report, scene
+from . import (audit, bench, compare, derive, envelopes, exact_table, generate, report,
+               scene)
 
 #: The subcommand modules, in the order ``--help`` lists them.
-COMMANDS = (report, generate, bench, scene, envelopes, exact_table, derive, audit)
+COMMANDS = (report, scene, compare, generate, derive, audit, bench, envelopes, exact_table)
+
+#: A value that starts like a negative number ("-1mm", "-.5"), which argparse would take for an
+#: option; it is joined to its option so that the range checks see it and say what is allowed.
+_NEGATIVE = re.compile(r"^-(\d|\.\d)")
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse with one-line errors: ``zener-sym COMMAND: error: ...`` and exit code 2."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def _join_negative_values(argv: list) -> list:
+    out = []
+    for token in argv:
+        if out and _NEGATIVE.match(token) and out[-1].startswith("--") and "=" not in out[-1]:
+            out[-1] = f"{out[-1]}={token}"
+        else:
+            out.append(token)
+    return out
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    from .. import __version__
+
+    p = Parser(
         prog="zener-sym",
         description="Zener's sphere-plate impact: exact solution, homotopy-analysis models, "
         "derivation, generated kernels and paper audit.",
     )
+    p.add_argument("--version", action="version", version=f"zener-sym {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
     for module in COMMANDS:
         module.add_parser(sub)
@@ -29,7 +57,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    argv = list(sys.argv[1:] if argv is None else argv)
+    try:
+        args = parser.parse_args(_join_negative_values(argv))
+    except SystemExit as exc:  # --help, --version, or a usage error already printed
+        return int(exc.code or 0)
     if not getattr(args, "func", None):
         parser.print_help()
         return 2

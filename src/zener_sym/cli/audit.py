@@ -7,21 +7,29 @@ import sys
 
 from ..audit.markdown import audit_md_path, cached_results, markdown
 from ..audit.run import summary_line
+from ._checkout import CheckoutError, source_root
 
 __all__ = ["add_parser"]
 
 
 def _run(args) -> int:
+    root = None
+    if args.check or args.write:
+        try:  # before any work: the audit takes a while
+            root = source_root(f"zener-sym audit --{'check' if args.check else 'write'}")
+        except CheckoutError as exc:
+            print(f"zener-sym audit: error: {exc}", file=sys.stderr)
+            return 2
     results = cached_results()
     if args.json:
         print(json.dumps([r.as_dict() for r in results], indent=1))
         return 0
     text = markdown(results)
     if args.check:
-        path = audit_md_path()
+        path = audit_md_path(root)
         old = path.read_text() if path.exists() else ""
         if old == text:
-            print(f"{path.name} is up to date ({summary_line(results)})")
+            print(f"{path} is up to date ({summary_line(results)})")
             return 0
         sys.stdout.writelines(difflib.unified_diff(
             old.splitlines(True), text.splitlines(True), f"{path.name} (committed)",
@@ -29,7 +37,7 @@ def _run(args) -> int:
         print(f"\n{path.name} is stale: run `zener-sym audit --write`", file=sys.stderr)
         return 1
     if args.write:
-        path = audit_md_path()
+        path = audit_md_path(root)
         path.write_text(text)
         print(f"wrote {path} ({summary_line(results)})")
         return 0

@@ -9,6 +9,8 @@ from __future__ import annotations
 import sys
 import time
 
+from ._checkout import CheckoutError, source_root
+
 __all__ = ["add_parser", "run"]
 
 
@@ -16,30 +18,33 @@ def run(markdown: bool = False, check: bool = False, out=print) -> int:
     from ..derivation import formulas, registry
     from ..derivation.steps import format_step
 
+    root = None
+    if check or markdown:
+        try:  # before the derivation's minute of work
+            root = source_root(f"zener-sym derive --{'check' if check else 'markdown'}")
+        except CheckoutError as exc:
+            print(f"zener-sym derive: error: {exc}", file=sys.stderr)
+            return 2
+
     t0 = time.perf_counter()
     d = registry.run(checks=True, echo=lambda line: out(line))
     out(f"derivation: {d.summary()}")
     status = 0 if d.ok else 1
     if not d.ok:
         out("derivation FAILED: " + "; ".join(format_step(s) for s in d.steps if not s.passed))
-    try:
-        if check:
-            fresh, diff = formulas.check(d)
-            if fresh:
-                out(f"{formulas.FILENAME} is up to date")
-            else:
-                out(diff)
-                out(f"{formulas.FILENAME} is stale: run `zener-sym derive --markdown`")
-                status = 1
-        if markdown:
-            if not d.ok:
-                out(f"not writing {formulas.FILENAME}: the derivation has failed steps")
-                return 1
-            path = formulas.write(d)
-            out(f"wrote {path}")
-    except RuntimeError as exc:  # not a source checkout
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
+    if check:
+        fresh, diff = formulas.check(d, root)
+        if fresh:
+            out(f"{formulas.formulas_path(root)} is up to date")
+        else:
+            out(diff)
+            out(f"{formulas.FILENAME} is stale: run `zener-sym derive --markdown`")
+            status = 1
+    if markdown:
+        if not d.ok:
+            out(f"not writing {formulas.FILENAME}: the derivation has failed steps")
+            return 1
+        out(f"wrote {formulas.write(d, root)}")
     out(f"total {time.perf_counter() - t0:.1f} s")
     return status
 

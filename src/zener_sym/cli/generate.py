@@ -5,32 +5,33 @@ from __future__ import annotations
 import sys
 
 from .. import codegen
+from ._checkout import CheckoutError, source_root
 
 
-def _formulas(check: bool) -> int:
+def _formulas(check: bool, root) -> int:
     """FORMULAS.md (the derived equations, at the checkout root) travels with generated/."""
     from ..derivation import formulas, registry
 
-    try:
-        formulas.repo_root()
-    except Exception as exc:  # a plain (non-editable) install has no FORMULAS.md to keep fresh
-        print(f"FORMULAS.md not checked: {exc}")
-        return 0
     d = registry.derive(checks=False)
     if check:
-        fresh, diff = formulas.check(d)
+        fresh, diff = formulas.check(d, root)
         if not fresh:
             sys.stdout.write(diff)
             print("FORMULAS.md is STALE; run `zener-sym generate` and commit the result")
             return 1
-        print("FORMULAS.md is up to date")
+        print(f"{formulas.formulas_path(root)} is up to date")
         return 0
-    print(f"wrote {formulas.write(d)}")
+    print(f"wrote {formulas.write(d, root)}")
     return 0
 
 
 def run(check: bool = False) -> int:
-    folder = codegen.generated_dir()
+    try:  # before any work
+        root = source_root(f"zener-sym generate{' --check' if check else ''}")
+    except CheckoutError as exc:
+        print(f"zener-sym generate: error: {exc}", file=sys.stderr)
+        return 2
+    folder = root / "generated"
     rendered = codegen.render_all()
     if check:
         d = codegen.diff(rendered, folder)
@@ -40,15 +41,11 @@ def run(check: bool = False) -> int:
             print(f"generated/ is STALE ({folder}); run `zener-sym generate` and commit the result")
             status = 1
         else:
-            print(f"generated/ is up to date ({len(rendered)} files checked)")
-        return max(status, _formulas(check=True))
-    if not (folder.parent / "pyproject.toml").exists():
-        print(f"refusing to write into {folder}: not a source checkout (no pyproject.toml beside "
-              "it); use an editable install (pip install -e .)", file=sys.stderr)
-        return 2
+            print(f"{folder} is up to date ({len(rendered)} files checked)")
+        return max(status, _formulas(True, root))
     changed = codegen.write(rendered, folder)
     print(f"wrote {len(changed)} of {len(rendered)} files into {folder}: {', '.join(changed) or '-'}")
-    return _formulas(check=False)
+    return _formulas(False, root)
 
 
 def add_parser(sub) -> None:

@@ -10,5 +10,6 @@ def add_parser(sub) -> None:
     p.add_argument("--out", default="zener-sym-report",
                    help="folder for the charts and tables (default: zener-sym-report)")
     p.add_argument("--skip", action="append", default=[], metavar="SECTION",
+                   choices=[n for n, _ in SECTIONS],
                    help="leave out a section (repeatable): " + ", ".join(n for n, _ in SECTIONS))
     p.set_defaults(func=lambda args: run(out_dir=args.out, skip=tuple(args.skip)))

@@ -1,16 +1,18 @@
 """``zener-sym scene``: a sphere, a plate and a speed in SI units -> a table (and a plot)."""
 from __future__ import annotations
 
+import os
 import sys
 import warnings
+from pathlib import Path
 
 import numpy as np
 
 from ..scene.checks import ZenerWarning
 from ..scene.materials import PRESETS, Material
-from ..scene.units import parse_quantity
+from ..scene.units import si_value
 
-__all__ = ["add_parser", "run", "plot_force"]
+__all__ = ["add_parser", "run", "plot_force", "scene_from_args", "add_scene_arguments"]
 
 
 def _number(text: str, field: str) -> float:
@@ -21,21 +23,38 @@ def _number(text: str, field: str) -> float:
 
 
 def _material(spec: str, which: str, yield_text: str | None) -> Material:
-    """A preset name, or 'E,nu,rho' with units (e.g. '210GPa,0.3,7850')."""
+    """A preset name, or 'E,nu,rho' with units (e.g. '210GPa,0.3,7850kg/m^3')."""
     if spec.lower() in PRESETS:
         mat = PRESETS[spec.lower()]
     else:
         parts = [p.strip() for p in spec.split(",")]
         if len(parts) != 3:
-            raise ValueError(f"--{which}: {spec!r} is neither a preset ({', '.join(PRESETS)}) "
+            raise ValueError(f"--{which} {spec}: neither a preset ({', '.join(PRESETS)}) "
                              f"nor 'E,nu,rho' such as '210GPa,0.3,7850kg/m^3'")
-        E = parse_quantity(parts[0], "pressure", f"{which} E")
-        nu = _number(parts[1], f"{which} nu")
-        rho = parse_quantity(parts[2], "density", f"{which} rho")
+        E = si_value(parts[0], "pressure", f"--{which} E")
+        nu = _number(parts[1], f"--{which} nu")
+        rho = si_value(parts[2], "density", f"--{which} rho")
         mat = Material(E, nu, rho, name=f"{which}")
     if yield_text is not None:
-        mat = mat.with_yield(parse_quantity(yield_text, "pressure", f"{which} yield"))
+        mat = mat.with_yield(si_value(yield_text, "pressure", f"--{which}-yield"))
     return mat
+
+
+def _plot_path(text: str) -> str:
+    """``--plot`` checked before any work: a writable folder and a format matplotlib writes."""
+    path = Path(text)
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in PLOT_FORMATS:
+        raise ValueError(f"--plot {text}: give a file name ending in "
+                         f"{', '.join('.' + f for f in PLOT_FORMATS)}")
+    folder = path.parent if str(path.parent) else Path(".")
+    if not folder.is_dir() or not os.access(folder, os.W_OK):
+        raise ValueError(f"--plot {text}: folder {str(folder)!r} does not exist or is not writable")
+    return text
+
+
+#: Formats ``--plot`` writes (matplotlib's common raster and vector formats).
+PLOT_FORMATS = ("png", "pdf", "svg")
 
 
 def plot_force(result, out: str, n: int = 400) -> str:
@@ -48,7 +67,7 @@ def plot_force(result, out: str, n: int = 400) -> str:
     except ImportError:
         raise SystemExit("--plot needs matplotlib: pip install 'zener-sym[plot]'") from None
     exact = result.scene.result(model="exact", warn=False)
-    t_end = 1.1 * max(result.contact_duration, exact.contact_duration)
+    t_end = 1.1 * max(result.contact_duration_s, exact.contact_duration_s)
     t = np.linspace(0.0, t_end, n)
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.plot(t * 1e6, exact.force(t), "k-", lw=2, label="exact")
@@ -64,20 +83,33 @@ def plot_force(result, out: str, n: int = 400) -> str:
     return out
 
 
-def run(args, out=print) -> int:
+def scene_from_args(args):
+    """The Scene the scene options describe (ValueError naming the option that is wrong)."""
     from ..scene.scene import Scene
 
+    for name in ("sphere", "plate", "radius", "thickness"):
+        if getattr(args, name) is None:
+            raise ValueError(f"--{name} is required (see --help)")
+    sphere = _material(args.sphere, "sphere", args.sphere_yield)
+    plate = _material(args.plate, "plate", args.plate_yield)
+    if args.v0 is None and args.drop_height is None:
+        raise ValueError("give the impact speed --v0 (e.g. 3m/s) or --drop-height (e.g. 0.5m)")
+    return Scene(
+        sphere, plate,
+        radius=si_value(args.radius, "length", "--radius"),
+        thickness=si_value(args.thickness, "length", "--thickness"),
+        v0=None if args.v0 is None else si_value(args.v0, "speed", "--v0"),
+        drop_height=(None if args.drop_height is None else
+                     si_value(args.drop_height, "length", "--drop-height")),
+        plate_radius=(None if args.plate_radius is None else
+                      si_value(args.plate_radius, "length", "--plate-radius")),
+    )
+
+
+def run(args, out=print) -> int:
     try:
-        sphere = _material(args.sphere, "sphere", args.sphere_yield)
-        plate = _material(args.plate, "plate", args.plate_yield)
-        scene = Scene(
-            sphere, plate,
-            radius=parse_quantity(args.radius, "length", "radius"),
-            thickness=parse_quantity(args.thickness, "length", "thickness"),
-            v0=parse_quantity(args.v0, "speed", "v0"),
-            plate_radius=(None if args.plate_radius is None else
-                          parse_quantity(args.plate_radius, "length", "plate_radius")),
-        )
+        plot = None if args.plot is None else _plot_path(args.plot)
+        scene = scene_from_args(args)
         with warnings.catch_warnings():
             # listed in the table; not printed twice
             warnings.simplefilter("ignore", ZenerWarning)
@@ -86,29 +118,40 @@ def run(args, out=print) -> int:
         print(f"zener-sym scene: error: {exc}", file=sys.stderr)
         return 2
     out(res.to_markdown() if args.markdown else str(res))
-    if args.plot:
-        out(f"plot: {plot_force(res, args.plot)}")
+    if plot:
+        out(f"plot: {plot_force(res, plot)}")
     return 0
+
+
+def add_scene_arguments(p, required: bool = True) -> None:
+    """The options that describe a scene (shared by ``scene`` and ``compare``)."""
+    p.add_argument("--sphere", required=required,
+                   help=f"sphere material: {', '.join(PRESETS)} or 'E,nu,rho' with units "
+                        "(210GPa,0.3,7850kg/m^3)")
+    p.add_argument("--plate", required=required, help="plate material (as --sphere)")
+    p.add_argument("--radius", required=required, help="sphere radius with a unit, e.g. 1mm")
+    p.add_argument("--thickness", required=required, help="plate thickness with a unit, e.g. 2mm")
+    speed = p.add_mutually_exclusive_group()
+    speed.add_argument("--v0", default=None, help="impact speed with a unit, e.g. 1m/s")
+    speed.add_argument("--drop-height", default=None,
+                       help="instead of --v0: drop height from rest, e.g. 0.5m "
+                            "(v0 = sqrt(2 g h), g = 9.80665 m/s^2)")
+    p.add_argument("--plate-radius", default=None, help="radius of a finite plate, e.g. 150mm")
+    p.add_argument("--sphere-yield", default=None, help="sphere yield strength, e.g. 1.5GPa")
+    p.add_argument("--plate-yield", default=None, help="plate yield strength, e.g. 250MPa")
 
 
 def add_parser(sub) -> None:
     p = sub.add_parser("scene", help="a sphere hitting a plate, in SI units: cheapest model "
                        "meeting --rtol, dimensional results and validity warnings")
-    p.add_argument("--sphere", required=True,
-                   help=f"sphere material: {', '.join(PRESETS)} or 'E,nu,rho' (210GPa,0.3,7850)")
-    p.add_argument("--plate", required=True, help="plate material (as --sphere)")
-    p.add_argument("--radius", required=True, help="sphere radius, e.g. 1mm")
-    p.add_argument("--thickness", required=True, help="plate thickness, e.g. 2mm")
-    p.add_argument("--v0", required=True, help="impact speed, e.g. 1m/s")
+    add_scene_arguments(p)
     p.add_argument("--rtol", type=float, default=1e-3,
                    help="relative accuracy the chosen model must meet (default 1e-3)")
     p.add_argument("--quantity", default="all",
                    help="quantity the accuracy is for (default all reported quantities)")
     p.add_argument("--model", default=None, help="force a model instead of choosing one")
-    p.add_argument("--plate-radius", default=None, help="radius of a finite plate, e.g. 150mm")
-    p.add_argument("--sphere-yield", default=None, help="sphere yield strength, e.g. 1.5GPa")
-    p.add_argument("--plate-yield", default=None, help="plate yield strength, e.g. 250MPa")
     p.add_argument("--markdown", action="store_true", help="print the table as markdown")
     p.add_argument("--plot", default=None, metavar="OUT.png",
-                   help="plot F(t) of the chosen model against exact (needs matplotlib)")
+                   help="plot F(t) of the chosen model against exact (png, pdf or svg; needs "
+                        "matplotlib)")
     p.set_defaults(func=run)

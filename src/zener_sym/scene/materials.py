@@ -1,6 +1,6 @@
 """Isotropic elastic materials for scenes: ``Material(E, nu, rho)`` and a few sourced presets.
 
-Values are in SI units (Pa, -, kg/m^3). ``yield_strength`` (Pa, optional) enables the yield
+Values are numbers in SI units (Pa, -, kg/m^3) or strings with a unit ("210 GPa"). ``yield_strength`` (Pa, optional) enables the yield
 warning of a scene.
 """
 from __future__ import annotations
@@ -9,21 +9,10 @@ import math
 import numbers
 from dataclasses import dataclass
 
+from .units import si_value
+
 __all__ = ["Material", "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
-           "get_material", "check_positive"]
-
-
-def check_positive(value, field: str, unit: str, what: str = "") -> float:
-    """``value`` as a float if it is a finite real > 0; ValueError naming ``field`` otherwise."""
-    label = f"{field} ({what})" if what else field
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise ValueError(f"{label} must be a real number in {unit}, got {value!r}; "
-                         f"allowed: 0 < {field} < infinity")
-    v = float(value)
-    if not math.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{label} must be finite and > 0 (in {unit}), got {value!r}; "
-                         f"allowed: 0 < {field} < infinity")
-    return v
+           "get_material"]
 
 
 @dataclass(frozen=True)
@@ -32,18 +21,31 @@ class Material:
 
     Parameters
     ----------
-    E : float
-        Young's modulus [Pa], finite and > 0.
+    E : float or str
+        Young's modulus: Pa, or a string with a unit (``"210 GPa"``).
     nu : float
         Poisson's ratio, -1 < nu < 0.5 (the range in which the bulk and shear moduli are positive).
-    rho : float
-        Density [kg/m^3], finite and > 0.
+    rho : float or str
+        Density: kg/m^3, or a string with a unit (``"7.85 g/cm^3"``).
     name : str, optional
         Label used in tables.
     source : str, optional
         Where the values come from.
-    yield_strength : float, optional
-        Uniaxial yield stress Y [Pa]; when given, scenes warn at the onset of yield.
+    yield_strength : float or str, optional
+        Uniaxial yield stress Y (Pa, or with a unit); when given, scenes warn at the onset of
+        yield.
+
+    Raises
+    ------
+    ValueError
+        For a string without a unit, or a value outside
+        ``zener_sym.scene.units.PLAUSIBLE``, or nu outside (-1, 0.5).
+
+    Examples
+    --------
+    >>> from zener_sym import Material
+    >>> Material("210 GPa", 0.3, "7850 kg/m^3", name="steel").plane_modulus / 1e9
+    230.76923076923077
     """
 
     E: float
@@ -54,8 +56,8 @@ class Material:
     yield_strength: float | None = None
 
     def __post_init__(self):
-        object.__setattr__(self, "E", check_positive(self.E, "E", "Pa", "Young's modulus"))
-        object.__setattr__(self, "rho", check_positive(self.rho, "rho", "kg/m^3", "density"))
+        object.__setattr__(self, "E", si_value(self.E, "pressure", "E"))
+        object.__setattr__(self, "rho", si_value(self.rho, "density", "rho"))
         nu = self.nu
         if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not math.isfinite(nu) \
                 or not -1.0 < float(nu) < 0.5:
@@ -63,8 +65,8 @@ class Material:
                              f"got {nu!r}")
         object.__setattr__(self, "nu", float(nu))
         if self.yield_strength is not None:
-            object.__setattr__(self, "yield_strength", check_positive(
-                self.yield_strength, "yield_strength", "Pa"))
+            object.__setattr__(self, "yield_strength", si_value(
+                self.yield_strength, "pressure", "yield_strength"))
 
     @property
     def plane_modulus(self) -> float:

@@ -5,14 +5,18 @@
     >>> round(sc.lam, 4)
     0.163
     >>> r = zs.summary(sc, rtol=1e-3)        # cheapest model meeting rtol, with the reason
-    >>> r.contact_duration                   # [s]  # doctest: +SKIP
+    >>> r.model
+    'exact'
+    >>> round(r.contact_duration_s * 1e6, 3)   # t_d in microseconds
+    6.857
 
 Conventions: velocities are positive towards the plate; the sphere rebounds with velocity
-V(t_d) = -e V0, and ``rebound_velocity`` is the rebound speed e V0 > 0. The plate deflection
-w is positive in the direction of the impact. Scaling: see ``zener_sym.scaling``.
+V(t_d) = -e V0, and ``rebound_speed_m_s`` is the rebound speed e V0 > 0. The plate deflection
+w is positive in the direction of the impact. Scaling: see ``zener_sym.scene.scaling``.
 """
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass, field
 
@@ -20,25 +24,36 @@ import numpy as np
 
 from . import checks, scaling
 from .checks import ZenerWarning
-from .materials import Material, check_positive, get_material
+from .materials import Material, get_material
+from .units import si_value
 
 __all__ = ["Scene", "SceneResult", "SCENE_FIELDS"]
 
-#: Dimensional summary fields of a SceneResult: (attribute, unit, description).
+#: Standard gravity [m/s^2] (CGPM 1901), for ``drop_height``: v0 = sqrt(2 g h).
+G_STANDARD = 9.80665
+
+#: Fields of a SceneResult: (attribute, unit, description). Dimensionless quantities carry the
+#: names of ``zener_sym.Summary``; SI quantities carry their unit in the name.
 SCENE_FIELDS = (
-    ("contact_duration", "s", "contact duration t_d"),
-    ("max_force", "N", "maximum contact force F_m"),
-    ("max_compression", "m", "maximum compression delta_m"),
-    ("restitution", "-", "coefficient of restitution e"),
-    ("energy_loss", "-", "energy-loss ratio xi = 1 - e^2"),
-    ("rebound_velocity", "m/s", "rebound speed e V0"),
-    ("final_deflection", "m", "plate deflection at the end of contact"),
+    ("contact_duration_s", "s", "contact duration t_d"),
+    ("max_force_N", "N", "maximum contact force F_m"),
+    ("max_compression_m", "m", "maximum compression delta_m"),
+    ("e", "-", "coefficient of restitution e"),
+    ("xi", "-", "energy-loss ratio xi"),
+    ("eta", "-", "asymmetry eta = t_dr / t_dc"),
+    ("rebound_speed_m_s", "m/s", "rebound speed e V0"),
+    ("final_deflection_m", "m", "plate deflection at the end of contact"),
 )
 
-#: The dimensionless summary field behind each dimensional one (the quantity select_model uses).
-QUANTITY_OF = {"contact_duration": "tau_d", "max_force": "F_m", "max_compression": "delta_m",
-               "restitution": "e", "energy_loss": "xi", "rebound_velocity": "e",
-               "final_deflection": "impulse"}
+#: The dimensionless summary field behind each scene field (the quantity select_model uses).
+QUANTITY_OF = {"contact_duration_s": "tau_d", "max_force_N": "F_m", "max_compression_m": "delta_m",
+               "e": "e", "xi": "xi", "eta": "eta", "rebound_speed_m_s": "e",
+               "final_deflection_m": "impulse"}
+
+#: Names of earlier releases, so that old code gets told the new name.
+RENAMED = {"contact_duration": "contact_duration_s", "max_force": "max_force_N",
+           "max_compression": "max_compression_m", "restitution": "e", "energy_loss": "xi",
+           "rebound_velocity": "rebound_speed_m_s", "final_deflection": "final_deflection_m"}
 
 
 class Scene:
@@ -49,32 +64,65 @@ class Scene:
     sphere, plate : Material or str
         Materials, or preset names (``zener_sym.PRESETS``: steel, glass, aluminium,
         table1-sphere, table1-plate).
-    radius : float
-        Sphere radius R [m], > 0.
-    thickness : float
-        Plate thickness H [m], > 0.
-    v0 : float
-        Impact speed V0 [m/s], > 0.
-    plate_radius : float, optional
-        Radius of a finite plate [m]; enables the finite-plate check.
+    radius : float or str
+        Sphere radius R: a number in metres, or a string with a unit (``"2.5 mm"``).
+    thickness : float or str
+        Plate thickness H: metres, or a string with a unit (``"2 mm"``).
+    v0 : float or str, optional
+        Impact speed V0: m/s, or a string with a unit (``"3 m/s"``).
+    plate_radius : float or str, optional
+        Radius of a finite plate (metres or with a unit); enables the finite-plate check.
+    drop_height : float or str, optional
+        Instead of ``v0``: the height the sphere falls from rest, v0 = sqrt(2 g h) with
+        g = 9.80665 m/s^2 (no air drag). Give exactly one of ``v0`` and ``drop_height``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown material, a string without a unit, a value that is not finite and > 0 or
+        outside the plausible range of ``zener_sym.scene.units.PLAUSIBLE``, both or neither of
+        ``v0`` and ``drop_height``, or a plate radius not larger than the sphere's.
 
     Notes
     -----
     The reduced mass is m* = m1: Zener's plate is infinite and its inertia is carried by the
-    admittance alpha (see ``zener_sym.scaling``).
+    admittance alpha (see ``zener_sym.scene.scaling``).
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> sc = zs.Scene("steel", "glass", radius="2.5 mm", thickness="2 mm", drop_height="0.5 m")
+    >>> round(sc.v0, 4)                  # sqrt(2 g h)
+    3.1316
+    >>> r = sc.summary()
+    >>> round(r.e, 3), round(r.contact_duration_s * 1e6, 2), round(r.max_force_N)
+    (0.306, 21.99, 186)
     """
 
-    def __init__(self, sphere, plate, radius, thickness, v0, plate_radius=None):
+    def __init__(self, sphere, plate, radius, thickness, v0=None, plate_radius=None, *,
+                 drop_height=None):
         self.sphere: Material = get_material(sphere)
         self.plate: Material = get_material(plate)
-        self.radius = check_positive(radius, "radius", "m", "sphere radius R")
-        self.thickness = check_positive(thickness, "thickness", "m", "plate thickness H")
-        self.v0 = check_positive(v0, "v0", "m/s", "impact speed")
+        self.radius = si_value(radius, "length", "radius")
+        self.thickness = si_value(thickness, "length", "thickness")
+        if (v0 is None) == (drop_height is None):
+            raise ValueError("give exactly one of v0 (impact speed, e.g. '3 m/s') and "
+                             f"drop_height (e.g. '0.5 m'), got v0={v0!r}, "
+                             f"drop_height={drop_height!r}")
+        if drop_height is not None:
+            self.drop_height = si_value(drop_height, "length", "drop_height")
+            self.v0 = math.sqrt(2.0 * G_STANDARD * self.drop_height)
+        else:
+            self.drop_height = None
+            self.v0 = si_value(v0, "speed", "v0")
         self.plate_radius = (None if plate_radius is None else
-                             check_positive(plate_radius, "plate_radius", "m"))
+                             si_value(plate_radius, "length", "plate_radius"))
         if self.plate_radius is not None and self.plate_radius <= self.radius:
             raise ValueError(f"plate_radius must exceed the sphere radius {self.radius:g} m, got "
                              f"{self.plate_radius:g} m")
+        if not math.isfinite(self.lam):
+            raise ValueError(f"this scene gives a non-finite lambda ({self.lam!r}): check the "
+                             "sizes, speed and materials")
 
     # -- derived properties (SI) ------------------------------------------------------------
     @property
@@ -188,21 +236,21 @@ class Scene:
         have = set(s.fields)
         get = lambda f, scale=1.0: scale * getattr(s, f) if f in have else None  # noqa: E731
         res = SceneResult(
-            scene=self, model=model, reason=reason, lam=self.lam,
-            contact_duration=get("tau_d", T), max_force=get("F_m", self.force_scale),
-            max_compression=get("delta_m", L), restitution=get("e"), energy_loss=get("xi"),
-            rebound_velocity=get("e", self.v0),
-            final_deflection=get("impulse", self.alpha * self.m_star * self.v0),
+            scene=self, model=model, reason=reason, lam=self.lam, summary=s,
+            contact_duration_s=get("tau_d", T), max_force_N=get("F_m", self.force_scale),
+            max_compression_m=get("delta_m", L), e=get("e"), xi=get("xi"), eta=get("eta"),
+            rebound_speed_m_s=get("e", self.v0),
+            final_deflection_m=get("impulse", self.alpha * self.m_star * self.v0),
             options=dict(options),
         )
         found = checks.static_checks(self)
-        if None in (res.contact_duration, res.max_compression, res.max_force,
-                    res.final_deflection):
+        if None in (res.contact_duration_s, res.max_compression_m, res.max_force_N,
+                    res.final_deflection_m):
             found.append(("not-checked", f"model {model!r} does not give every quantity the "
                           "plate and yield checks need; they were skipped"))
         else:
-            found += checks.dynamic_checks(self, res.contact_duration, res.max_compression,
-                                           res.max_force, s.impulse)
+            found += checks.dynamic_checks(self, res.contact_duration_s, res.max_compression_m,
+                                           res.max_force_N, s.impulse)
         res.warnings = found
         if warn:
             for code, msg in found:
@@ -212,29 +260,67 @@ class Scene:
 
 @dataclass
 class SceneResult:
-    """Dimensional results of one scene with one model (SI units; see ``SCENE_FIELDS``).
+    """Results of one scene with one model: dimensionless ones under the names of
+    ``zener_sym.Summary`` (``lam``, ``e``, ``xi``, ``eta``), SI ones with their unit in the name.
+
+    Attributes
+    ----------
+    scene : Scene
+    model : str
+        The model used.
+    reason : str
+        Why that model (the selection's sentence, or "requested").
+    lam : float
+        Zener's inelasticity parameter lambda of the scene.
+    summary : Summary
+        The model's dimensionless summary (every field it gives).
+    contact_duration_s : float or None
+        Contact duration t_d [s].
+    max_force_N : float or None
+        Maximum contact force F_m [N].
+    max_compression_m : float or None
+        Maximum compression delta_m [m].
+    e, xi, eta : float or None
+        Restitution, energy-loss ratio (xi = 2 I - I^2, Eq. 69; 1 - e^2 for the exact model,
+        not for the approximate ones, whose impulse is not 1 + e) and asymmetry.
+    rebound_speed_m_s : float or None
+        Rebound speed e V0 [m/s].
+    final_deflection_m : float or None
+        Plate deflection at the end of contact [m].
+    warnings : list
+        The validity checks as (code, message) pairs.
 
     A field the model cannot give is None (a model chosen by ``select_model`` with quantity
-    "all" gives them all). ``warnings`` lists the validity checks as (code, message) pairs.
+    "all" gives them all).
     """
 
     scene: Scene
     model: str
     reason: str
     lam: float
-    contact_duration: float | None
-    max_force: float | None
-    max_compression: float | None
-    restitution: float | None
-    energy_loss: float | None
-    rebound_velocity: float | None
-    final_deflection: float | None
+    summary: object
+    contact_duration_s: float | None
+    max_force_N: float | None
+    max_compression_m: float | None
+    e: float | None
+    xi: float | None
+    eta: float | None
+    rebound_speed_m_s: float | None
+    final_deflection_m: float | None
     options: dict = field(default_factory=dict)
     warnings: list = field(default_factory=list)
 
+    def __getattr__(self, name):
+        if name in RENAMED:
+            raise AttributeError(f"SceneResult.{name} is now {RENAMED[name]!r} (dimensionless "
+                                 "fields carry Summary's names, SI fields their unit)")
+        raise AttributeError(f"SceneResult has no field {name!r}; fields: "
+                             f"{', '.join(f for f, _, _ in SCENE_FIELDS)}, lam, summary")
+
     def history(self, t, model: str | None = None) -> dict:
-        """Histories at times ``t`` [s] (>= 0): force F [N], plate deflection w [m], sphere
-        velocity V [m/s] (positive towards the plate), compression delta [m].
+        """Histories at times ``t`` [s] (>= 0) as a dict: ``t_s``, ``force_N``,
+        ``deflection_m`` (plate centre), ``velocity_m_s`` (sphere, positive towards the plate)
+        and ``compression_m``.
 
         Uses the result's model, or ``model`` if given.
         """
@@ -248,24 +334,24 @@ class SceneResult:
         h = _history(self.lam, t / sc.T, model=name,
                      **(self.options if name == self.model else {}))
         return {
-            "t": t,
-            "force": sc.force_scale * h.force,
-            "deflection": sc.alpha * sc.m_star * sc.v0 * h.impulse,
-            "velocity": sc.v0 * (1.0 - sc.m_star / sc.m1 * h.impulse),
-            "compression": sc.length_scale * h.delta,
+            "t_s": t,
+            "force_N": sc.force_scale * h.force,
+            "deflection_m": sc.alpha * sc.m_star * sc.v0 * h.impulse,
+            "velocity_m_s": sc.v0 * (1.0 - sc.m_star / sc.m1 * h.impulse),
+            "compression_m": sc.length_scale * h.delta,
         }
 
     def force(self, t):
-        """Contact force F(t) [N]."""
-        return self.history(t)["force"]
+        """Contact force F(t) [N] at times ``t`` [s]."""
+        return self.history(t)["force_N"]
 
     def deflection(self, t):
-        """Plate centre deflection w(t) [m] (Eq. 65)."""
-        return self.history(t)["deflection"]
+        """Plate centre deflection w(t) [m] (Eq. 65) at times ``t`` [s]."""
+        return self.history(t)["deflection_m"]
 
     def velocity(self, t):
-        """Sphere velocity V(t) [m/s] (Eq. 64), positive towards the plate."""
-        return self.history(t)["velocity"]
+        """Sphere velocity V(t) [m/s] (Eq. 64), positive towards the plate, at ``t`` [s]."""
+        return self.history(t)["velocity_m_s"]
 
     def table(self) -> list:
         """Rows (quantity, value, unit) of the inputs, the scalings and the results."""
@@ -288,6 +374,10 @@ class SceneResult:
             v = getattr(self, name)
             rows.append((desc, f"n/a (not given by model {self.model!r})" if v is None
                          else f"{v:.6g}", unit if v is not None else ""))
+        if self.e is not None and self.xi is not None and abs(self.xi - (1 - self.e**2)) > 1e-9:
+            rows.append(("note", f"model {self.model!r} is approximate: its xi = 2I - I^2 "
+                         f"(Eq. 69) differs from 1 - e^2 = {1 - self.e**2:.6g}; the exact "
+                         "identity I(t_d) = 1 + e does not hold for it", ""))
         for code, msg in self.warnings:
             rows.append((f"WARNING {code}", msg, ""))
         return rows

@@ -9,12 +9,11 @@ from . import envelopes as _env
 
 __all__ = ["Selection", "select_model", "QUANTITY_ALIASES", "ALL_QUANTITIES"]
 
-#: Dimensional names accepted for the quantity, mapped to the table's quantity.
+#: Scene field names accepted for the quantity, mapped to the table's quantity.
 QUANTITY_ALIASES = {
-    "contact_duration": "tau_d", "max_force": "F_m", "max_compression": "delta_m",
-    "restitution": "e", "rebound_velocity": "e", "energy_loss": "xi",
-    "final_deflection": "impulse", "force": "force_history", "deflection": "impulse_history",
-    "velocity": "impulse_history",
+    "contact_duration_s": "tau_d", "max_force_N": "F_m", "max_compression_m": "delta_m",
+    "rebound_speed_m_s": "e", "final_deflection_m": "impulse", "force": "force_history",
+    "deflection": "impulse_history", "velocity": "impulse_history",
 }
 #: What quantity="all" asks for: every summary quantity a scene result reports.
 ALL_QUANTITIES = ("tau_d", "F_m", "delta_m", "e", "xi", "impulse")
@@ -56,18 +55,18 @@ def _quantities(quantity, table) -> tuple:
     return (q,)
 
 
-def _envelope(entry, qs, idx):
-    """Worst envelope over the quantities qs and the intervals idx; None if any is missing."""
+def _envelope(entry, qs, idx, model=None):
+    """(worst envelope over the quantities qs and the intervals idx, None) or (None, why not)."""
     worst = 0.0
     for q in qs:
         row = entry["envelopes"].get(q)
-        if row is None:
-            return None
-        for i in idx:
-            if row[i] is None:
-                return None
-            worst = max(worst, row[i])
-    return worst
+        field = q.replace("_history", "")
+        if model is not None and field not in (model.summary_fields + model.history_fields):
+            return None, f"gives no {field}"
+        if row is None or any(row[i] is None for i in idx):
+            return None, f"{q} not measured at this lambda"
+        worst = max(worst, max(row[i] for i in idx))
+    return worst, None
 
 
 def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=None
@@ -80,11 +79,12 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
         Zener's lambda (scalar) or a scene (its ``lam`` is used).
     quantity : str
         A quantity of the envelope table (``delta_m``, ``tau_d``, ``e``, ``F_m``, ``xi``, ...,
-        ``force_history``, ``impulse_history``), a dimensional alias (``contact_duration``,
-        ``max_force``, ``restitution``, ``force``, ...), or ``"all"`` (every summary quantity a
+        ``force_history``, ``impulse_history``), a scene field (``contact_duration_s``, ``max_force_N``,
+        ...), a history (``force``, ``deflection``, ``velocity``), or ``"all"`` (every summary quantity a
         scene reports).
     rtol : float
-        Required relative accuracy, > 0.
+        Required accuracy, > 0: relative, except for ``xi``, whose error is absolute (the
+        energy loss is a fraction of the impact energy and tends to 0 with lambda).
     table : dict, optional
         An envelope table (default: the committed ``data/envelopes.json``).
 
@@ -102,6 +102,7 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
     table, the answer is "exact".
     """
     from ..models import REGISTRY
+    from ..params import bound_text
 
     if isinstance(rtol, bool) or not isinstance(rtol, numbers.Real) or not math.isfinite(rtol) \
             or rtol <= 0:
@@ -110,9 +111,20 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
     lam = _lambda_of(lam_or_scene)
     qs = _quantities(quantity, table)
     what = "every reported quantity" if quantity == "all" else repr(quantity)
+    accepting = [m for m in REGISTRY.values() if m.lam_bound is None or lam < m.lam_bound]
+    if not accepting:
+        widest = max(REGISTRY.values(), key=lambda m: m.lam_bound)
+        raise ValueError(f"lambda = {lam:.6g} is outside the range of every model; the widest "
+                         f"is {widest.name!r}: {bound_text(widest.lam_bound)}")
     idx = [i for i, (lo, hi) in enumerate(table["intervals"]) if lo <= lam <= hi]
     if not idx:
         hi = table["intervals"][-1][1]
+        exact = REGISTRY["exact"]
+        if exact.lam_bound is not None and lam >= exact.lam_bound:
+            raise ValueError(f"lambda = {lam:.6g} is outside the measured range [0, {hi:g}] of "
+                             f"the envelope table and outside the exact model's range "
+                             f"({bound_text(exact.lam_bound)}): no model can be chosen for an "
+                             "accuracy there")
         return Selection("exact", f"lambda = {lam:.4g} is outside the measured range "
                          f"[0, {hi:g}] of the envelope table: direct integration ('exact')")
     span = (table["intervals"][idx[0]][0], table["intervals"][idx[-1]][1])
@@ -125,13 +137,14 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
         if bound is not None and lam >= bound:
             rejected.append(f"{name}: lambda beyond its bound {bound:.4g}")
             continue
-        env = _envelope(entry, qs, idx)
+        env, why_not = _envelope(entry, qs, idx, REGISTRY[name])
         if env is None:
-            rejected.append(f"{name}: no measured envelope")
+            rejected.append(f"{name}: {why_not}")
             continue
         if env <= rtol:
             why = (f"cheapest qualifying model (cost rank {entry['cost_rank']}): measured max "
-                   f"relative error of {what} for lambda in [{span[0]:g}, {span[1]:g}] is "
+                   f"error (relative; absolute for xi) of {what} for lambda in "
+                   f"[{span[0]:g}, {span[1]:g}] is "
                    f"{env:.2g} <= rtol {rtol:g}")
             if rejected:
                 why += "; cheaper models rejected: " + "; ".join(rejected)
@@ -142,7 +155,7 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
         why += " (" + "; ".join(rejected) + ")"
     why += ": falling back to direct integration ('exact')"
     exact_entry = table["models"].get("exact")
-    env = None if exact_entry is None else _envelope(exact_entry, qs, idx)
+    env = None if exact_entry is None else _envelope(exact_entry, qs, idx)[0]
     if env is not None and env > rtol:
         why += (f", the most accurate model available; its own measured error {env:.2g} "
                 f"exceeds rtol, so that accuracy is not reached")

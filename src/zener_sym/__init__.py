@@ -14,7 +14,7 @@ from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
 from .scene.compare import Comparison, compare
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 
 def __getattr__(name):

@@ -1,0 +1,71 @@
+"""Examples cannot rot: the docstring Examples run as doctests, the README's Python blocks run,
+and the README's printed numbers are the ones the code gives."""
+from __future__ import annotations
+
+import doctest
+import importlib
+import re
+
+import pytest
+
+from conftest import ROOT
+
+#: Public modules whose docstring examples are part of the documentation.
+DOCTEST_MODULES = ["zener_sym", "zener_sym.api", "zener_sym.scene.scene",
+                   "zener_sym.scene.compare", "zener_sym.scene.units",
+                   "zener_sym.scene.materials", "zener_sym.scene.select"]
+
+
+@pytest.mark.parametrize("name", DOCTEST_MODULES)
+def test_docstring_examples(name):
+    module = importlib.import_module(name)
+    result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert result.failed == 0
+
+
+def _readme_blocks():
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    return re.findall(r"```python\n(.*?)```", text, flags=re.S)
+
+
+def test_readme_python_blocks_run_and_print_what_they_say(monkeypatch):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    monkeypatch.setattr(plt, "show", lambda *a, **k: None)
+    blocks = _readme_blocks()
+    assert len(blocks) >= 3
+    scope: dict = {}
+    checked = 0
+    for block in blocks:
+        exec(compile(block, "README.md", "exec"), scope)  # noqa: S102 - our own README
+        # "expr   # 0.306  comment": the shown numbers are what the expression gives
+        for line in block.splitlines():
+            m = re.match(r"^(\S.*?)\s+# ([-0-9., ']+?)\s{2}", line + "  ")
+            if not m or "=" in m.group(1).split("(")[0]:
+                continue
+            shown = [x.strip() for x in m.group(2).split(",")]
+            value = eval(m.group(1), scope)  # noqa: S307
+            values = value if isinstance(value, tuple) else (value,)
+            assert len(values) == len(shown), line
+            checked += 1
+            for v, s in zip(values, shown):
+                if s.startswith("'"):
+                    assert v == s.strip("'"), line
+                else:
+                    digits = len(s.split(".")[1]) if "." in s else 0
+                    assert round(float(v), digits) == float(s), (line, v)
+    plt.close("all")
+    assert checked >= 4  # the quick start's numbers were compared
+
+
+def test_readme_is_for_users():
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert len(text.splitlines()) <= 300
+    assert "Elastic impact of sphere on large plate" in text
+    for word in ("issue ", "this branch", "load average"):
+        assert word not in text
+    for link in re.findall(r"\]\(([^)#]+)\)", text):
+        if not link.startswith("http"):
+            assert (ROOT / link).exists(), link

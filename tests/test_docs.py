@@ -42,7 +42,8 @@ def test_readme_python_blocks_run_and_print_what_they_say(monkeypatch):
         exec(compile(block, "README.md", "exec"), scope)  # noqa: S102 - our own README
         # "expr   # 0.306  comment": the shown numbers are what the expression gives
         for line in block.splitlines():
-            m = re.match(r"^(\S.*?)\s+# ([-0-9., ']+?)\s{2}", line + "  ")
+            m = re.match(r"^(\S.*?)\s+# ((?:[-0-9.]+|'[^']*')(?:, (?:[-0-9.]+|'[^']*'))*)\s{2}",
+                         line + "  ")
             if not m or "=" in m.group(1).split("(")[0]:
                 continue
             shown = [x.strip() for x in m.group(2).split(",")]

@@ -109,7 +109,8 @@ def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str
         "",
         (_md_table(["target", "grid", "fast_s", "slow_s", "ratio", "required", "met"],
                    [{**r, "fast_s": f"{r['fast_s']:.3g}", "slow_s": f"{r['slow_s']:.3g}",
-                     "ratio": f"{r['ratio']:.3g}"} for r in tg])
+                     "ratio": f"{r['ratio']:.3g}", "met": "yes" if r["met"] else "no"}
+                    for r in tg])
          if tg else "no target applies yet (the models they compare are not registered)"),
         "",
     ]

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .format import PAPER_LAMBDAS, fmt, markdown_table
+from .format import PAPER_LAMBDAS, fmt, markdown_table, seconds
 
 
 def exact_section() -> str:
@@ -20,7 +20,7 @@ def exact_section() -> str:
     return (
         "## Exact solution of Zener's equation (10)\n\n"
         "Direct integration (scipy DOP853, rtol 1e-12, analytic phases in u = sqrt(delta) at both\n"
-        f"ends of contact); {len(PAPER_LAMBDAS)} lambda values in {dt:.2f} s.\n\n"
+        f"ends of contact); {len(PAPER_LAMBDAS)} lambda values in {seconds(dt)}.\n\n"
         + markdown_table(SUMMARY_FIELDS, rows)
     )
 
@@ -71,7 +71,7 @@ def model_comparison_section() -> str:
     dt = time.perf_counter() - t0
     return (comparison_markdown(PAPER_LAMBDAS) + "\n\n### Error envelopes of ham0 and ham1\n\n"
             "Largest relative error against exact over lambda = 0, 0.1, ..., 2.4 (force history: "
-            f"max |F - F_exact| over the contact / exact F_m); {dt:.1f} s.\n\n" + env)
+            f"max |F - F_exact| over the contact / exact F_m); {seconds(dt)}.\n\n" + env)
 
 
 def derivation_section() -> str:
@@ -87,7 +87,7 @@ def derivation_section() -> str:
                f"{len(failed)} FAILED: " + "; ".join(f"({s.eq}) {s.what}" for s in failed))
     return (
         "## Derivation (SymPy re-derivation of Eqs. 12-81)\n\n"
-        f"{len(d.steps)} checked steps, {verdict}; derivation time {d.seconds:.1f} s"
+        f"{len(d.steps)} checked steps, {verdict}; derivation time {seconds(d.seconds)}"
         f"{'' if dt > 1 else ' (cached in this process)'}. lambda_crit (omega0 = 0) = "
         f"{float(d.expr['lam_crit']):.10f}. The 2F1 antiderivatives of (40)-(41) are proved by "
         "differentiation at 40 digits (residual <= 1e-25 required). The accuracy of the "
@@ -124,7 +124,13 @@ def run(out=print, out_dir=None, skip=()) -> int:
     global OUT_DIR
     if out_dir is not None:
         OUT_DIR = Path(out_dir)
-    out("# zener-sym report\n")
+    import datetime
+    import platform
+
+    from .. import __version__
+
+    out(f"# zener-sym report\n\nzener-sym {__version__}, {datetime.date.today().isoformat()}, "
+        f"Python {platform.python_version()} on {platform.machine()}.\n")
     status = 0
     for name, section in SECTIONS:
         if name in skip:

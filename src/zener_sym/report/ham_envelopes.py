@@ -11,6 +11,8 @@ import time
 
 import numpy as np
 
+from .format import seconds
+
 __all__ = ["envelopes", "envelope_markdown", "comparison_markdown", "FIELDS", "LAMBDAS"]
 
 FIELDS = ("F_m", "tau_d", "e", "impulse", "delta_m")
@@ -102,13 +104,17 @@ def comparison_markdown(lams=(0.0, 0.11, 1.01, 1.51, 1.99)) -> str:
     return ("## Model comparison\n\nEach model against direct integration (exact) at the paper's "
             "lambdas: value (relative error). `-`: the model does not give the field; `n/a`: lambda "
             "outside the model's range (oneway needs xi = 2 lambda int F_Hertz^2 <= 1). hertz, "
-            f"hunter and reed ignore lambda. ({dt:.1f} s)\n\n" + head + exrow + "\n" + body)
+            "hunter and reed ignore lambda. The HAM models' xi is 2I - I^2 (Eq. 69) with their "
+            "own impulse I; for the exact solution I = 1 + e, so xi = 1 - e^2 lies in [0, 1], "
+            "but an approximate impulse breaks that identity, and xi turns negative where the "
+            f"model's I exceeds 2 (ham1 near lambda = 0, where its I is 2.07). ({seconds(dt)})\n\n"
+            + head + exrow + "\n" + body)
 
 
 def _main():  # pragma: no cover - command-line helper
     t0 = time.perf_counter()
     print(envelope_markdown())
-    print(f"\n({time.perf_counter() - t0:.1f} s)")
+    print(f"\n({seconds(time.perf_counter() - t0)})")
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -100,6 +100,22 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
     every table interval containing lambda (two at an interval edge) is <= rtol. Candidates are
     tried in the table's measured cost order; with none qualifying, or lambda outside the
     table, the answer is "exact".
+
+    Raises
+    ------
+    ValueError
+        For a bad lambda, rtol or quantity, or a lambda outside the range of every model.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> model, reason = zs.select_model(0.8, "e", 1e-4)
+    >>> model
+    'exact'
+    >>> zs.select_model(2000, "e", 1e-3)
+    Traceback (most recent call last):
+    ...
+    ValueError: lambda = 2000 is outside the measured range [0, 10] of the envelope table and outside the exact model's range (0 <= lambda <= 1000): no model can be chosen for an accuracy there
     """
     from ..models import REGISTRY
     from ..params import bound_text

@@ -42,7 +42,7 @@ def test_formulas_md_is_fresh():
     from zener_sym.derivation import formulas
     from zener_sym.derivation.registry import derive
 
-    fresh, diff = formulas.check(derive())
+    fresh, diff = formulas.check(derive(), ROOT)
     assert fresh, diff
 
 
@@ -54,7 +54,7 @@ def test_stale_formulas_fails_with_diff(monkeypatch, tmp_path):
     stale = tmp_path / "FORMULAS.md"
     stale.write_text(formulas.render(derive()).replace("(35)", "(135)"))
     monkeypatch.setattr(formulas, "formulas_path", lambda root=None: stale)
-    fresh, diff = formulas.check(derive())
+    fresh, diff = formulas.check(derive(), ROOT)
     assert not fresh and "-## (135)" in diff and "+## (35)" in diff
 
 

@@ -5,6 +5,8 @@ from zener_sym import codegen
 from zener_sym.cli import generate as generate_cmd
 from zener_sym.derivation import formulas
 
+from conftest import ROOT
+
 
 def test_generated_and_formulas_are_fresh(capsys):
     assert generate_cmd.run(check=True) == 0, capsys.readouterr().out
@@ -12,7 +14,7 @@ def test_generated_and_formulas_are_fresh(capsys):
 
 def test_stale_formulas_fail_with_a_diff(tmp_path, monkeypatch, capsys):
     stale = tmp_path / "FORMULAS.md"
-    shutil.copy(formulas.formulas_path(), stale)
+    shutil.copy(formulas.formulas_path(ROOT), stale)
     stale.write_text(stale.read_text().replace("=", "==", 1))
     monkeypatch.setattr(formulas, "formulas_path", lambda root=None: stale)
     assert generate_cmd.run(check=True) == 1

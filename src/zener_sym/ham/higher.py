@@ -52,7 +52,6 @@ import math
 import numbers
 
 import numpy as np
-import scipy.linalg
 import scipy.optimize
 
 __all__ = ["FORMULATIONS", "PAPER_MAX_ORDER", "STRAINED_MAX_ORDER", "N_NODES", "TAIL_TOL",
@@ -88,9 +87,14 @@ _X, _FIT = _first_kind(N_NODES)
 _T = 0.5 * (1.0 + _X)
 _TH = np.pi * np.sin(0.5 * np.pi * _T) ** 2
 _DTH = 0.5 * np.pi ** 2 * np.sin(np.pi * _T)  # d theta / dt
-_INTC = _C.chebint(np.eye(N_NODES), lbnd=-1.0, axis=0) @ _FIT  # values -> antiderivative coefs
-_CUM = _C.chebvander(_X, N_NODES) @ _INTC * 0.5  # int_0^{t_j} g dt from g at the nodes (dt = dx/2)
-_CUM_END = (_C.chebvander(np.array([1.0]), N_NODES) @ _INTC * 0.5)[0]
+def _mm(A, B):
+    """A @ B without BLAS (thread-count independent digits, see ``_mv``)."""
+    return np.einsum("ij,jk->ik", A, B)
+
+
+_INTC = _mm(_C.chebint(np.eye(N_NODES), lbnd=-1.0, axis=0), _FIT)  # values -> antiderivative
+_CUM = _mm(_C.chebvander(_X, N_NODES), _INTC) * 0.5  # int_0^{t_j} g dt from node values (dt = dx/2)
+_CUM_END = _mm(_C.chebvander(np.array([1.0]), N_NODES), _INTC)[0] * 0.5
 
 # quadrature on a piece [A, B] of theta: smoothstep theta = A + (B - A) v^2 (3 - 2 v), Chebyshev
 # points in v (the map's derivative vanishes at both ends: endpoint powers s^{1/2} become analytic)
@@ -99,9 +103,36 @@ _QX, _QFIT = _first_kind(_NQ)
 _QV = 0.5 * (1.0 + _QX)
 _QMAP = _QV * _QV * (3.0 - 2.0 * _QV)
 _QDMAP = 6.0 * _QV * (1.0 - _QV)
-_QINTC = _C.chebint(np.eye(_NQ), lbnd=-1.0, axis=0) @ _QFIT
-_QCUM = _C.chebvander(_QX, _NQ) @ _QINTC * 0.5
-_QEND = (_C.chebvander(np.array([1.0]), _NQ) @ _QINTC * 0.5)[0]
+_QINTC = _mm(_C.chebint(np.eye(_NQ), lbnd=-1.0, axis=0), _QFIT)
+_QCUM = _mm(_C.chebvander(_QX, _NQ), _QINTC) * 0.5
+_QEND = _mm(_C.chebvander(np.array([1.0]), _NQ), _QINTC)[0] * 0.5
+
+
+def _mv(A, v):
+    """A @ v without BLAS: the same digits whatever the thread count (BLAS may split the sum
+    across threads), and no thread start-up for these small products."""
+    return np.einsum("...j,j->...", A, v)
+
+
+def _expm_stack(A, h):
+    """exp(A h) for each h (a 1-D array), by Taylor series and squaring, all in einsum: scipy's
+    expm goes through threaded BLAS, whose spinning threads made the study ten times slower on a
+    loaded machine. Scaled so that |A h / 2^s|_1 <= 1/2, where 20 Taylor terms are exact to
+    rounding (2^-20 / 20! ~ 4e-25)."""
+    h = np.asarray(h, dtype=float)
+    norm = np.abs(A).sum(axis=0).max() * np.abs(h)
+    s = np.maximum(np.ceil(np.log2(np.maximum(norm, 1e-300) / 0.5)), 0).astype(int)
+    X = A[None] * (h / 2.0 ** s)[:, None, None]
+    n = A.shape[0]
+    E = np.broadcast_to(np.eye(n), X.shape).copy()
+    term = E.copy()
+    for j in range(1, 21):
+        term = np.einsum("nij,njk->nik", term, X) / j
+        E += term
+    for k in range(int(s.max()) if s.size else 0):
+        sq = np.einsum("nij,njk->nik", E, E)
+        E = np.where((k < s)[:, None, None], sq, E)
+    return E
 
 
 def _theta_to_x(theta):
@@ -175,16 +206,16 @@ class _Op:
     def solve(self, R):
         """(y, y', y'') at the nodes and (y, y') at theta = pi, for R at the nodes."""
         b = self.b
-        A, B = _CUM @ (self.wc * R), _CUM @ (self.ws * R)
+        A, B = _mv(_CUM, self.wc * R), _mv(_CUM, self.ws * R)
         y = self.e_minus * (self.s * A - self.c * B)
         y1 = self.e_minus * ((self.c - b * self.s) * A + (self.s + b * self.c) * B)
         y2 = R - 2.0 * b * y1 - (1.0 + b * b) * y
-        Ap, Bp = _CUM_END @ (self.wc * R), _CUM_END @ (self.ws * R)
+        Ap, Bp = _mv(_CUM_END, self.wc * R), _mv(_CUM_END, self.ws * R)
         return y, y1, y2, self.e_pi * Bp, self.e_pi * (-Ap - b * Bp)
 
     def at_pi(self, R):
         """y(pi) only."""
-        return self.e_pi * (_CUM_END @ (self.ws * R))
+        return self.e_pi * (_mv(_CUM_END, self.ws * R))
 
 
 def _omega0_condition(lam):
@@ -375,8 +406,8 @@ class HamSolution:
 
     # ------------------------------------------------------------------------ evaluation
     def _fit(self):
-        self._cd = _FIT @ self._delta_nodes
-        self._cv = _FIT @ self._vel_nodes
+        self._cd = _mv(_FIT, self._delta_nodes)
+        self._cv = _mv(_FIT, self._vel_nodes)
         scale = np.max(np.abs(self._delta_nodes))
         tail = np.max(np.abs(self._cd[-2:]))
         if not (np.isfinite(scale) and tail <= TAIL_TOL * scale):
@@ -409,7 +440,7 @@ class HamSolution:
 
     def _past(self, theta):
         n = self.order + 1
-        Z = scipy.linalg.expm(self._past_matrix[None] * (theta - np.pi)[:, None, None]) @ self._past_state
+        Z = np.einsum("nij,j->ni", _expm_stack(self._past_matrix, theta - np.pi), self._past_state)
         return Z[:, :n].sum(axis=1), self.omega_s * Z[:, n:].sum(axis=1)
 
     def _first_zero(self, fun, lo, hi, n=400):
@@ -453,8 +484,8 @@ class HamSolution:
             th = A + (B - A) * _QMAP
             d = np.maximum(self.delta(th), 0.0)
             wq = (B - A) * _QDMAP / self.omega_s
-            imp += _QEND @ (d * np.sqrt(d) * wq)
-            f2 += _QEND @ (d**3 * wq)
+            imp += _mv(_QEND, d * np.sqrt(d) * wq)
+            f2 += _mv(_QEND, d**3 * wq)
         e = -float(self.velocity(np.array([self.theta_d]))[0])
         return dict(delta_m=dm, tau_dc=thc / self.omega_s, tau_d=self.tau_d, e=e, F_m=dm**1.5,
                     impulse=float(imp), int_F2=float(f2))
@@ -468,10 +499,10 @@ class HamSolution:
             d, v = self._eval(th)
             F = np.maximum(d, 0.0) ** 1.5
             wq = (B - A) * _QDMAP / self.omega_s
-            I = I0 + _QCUM @ (F * wq)
+            I = I0 + _mv(_QCUM, F * wq)
             r = v - 1.0 + self.lam * F + I
-            total += _QEND @ (r * r * wq)
-            I0 += _QEND @ (F * wq)
+            total += _mv(_QEND, r * r * wq)
+            I0 += _mv(_QEND, F * wq)
         return float(total / self.tau_d)
 
     def history(self, tau):
@@ -489,7 +520,7 @@ class HamSolution:
             L = B - A
             qth = A + L * _QMAP
             dq = np.maximum(self.delta(qth), 0.0)
-            coef = _C.chebint(_QFIT @ (dq * np.sqrt(dq) * L * _QDMAP / self.omega_s), lbnd=-1.0,
+            coef = _C.chebint(_mv(_QFIT, dq * np.sqrt(dq) * L * _QDMAP / self.omega_s), lbnd=-1.0,
                               scl=0.5)
             sel = th >= A
             frac = np.clip((th[sel] - A) / L, 0.0, 1.0)

@@ -49,6 +49,9 @@ class HamSeries(Model):
     bound_reason = ("lam_crit = 2.44243892998...: omega0 of the auxiliary operator is real only "
                     "below it, Eq. (81); the strained formulation stops at 2.032131391")
     options = ("order", "c0", "formulation")
+    # a family of models (order, c0, formulation) measured in docs/ham_convergence.md, and slow
+    # with the default optimal c0: not a candidate of select_model
+    in_envelopes = False
 
     @property
     def lam_bound(self):

@@ -3,6 +3,7 @@ from .base import (HISTORY_FIELDS, REGISTRY, SUMMARY_FIELDS, FieldUnavailableErr
     get_model, register)
 from . import exact  # noqa: F401  (registers "exact")
 from . import ham  # noqa: F401  (registers "ham0", "ham1")
+from . import ham_series  # noqa: F401  (registers "ham": any order, Liao's c0)
 from . import pulses  # noqa: F401  (registers "hertz", "hunter", "reed", "oneway")
 
 __all__ = ["Model", "REGISTRY", "register", "get_model", "SUMMARY_FIELDS", "HISTORY_FIELDS",

@@ -33,6 +33,8 @@ class Model:
     lam_bound: float | None = None
     bound_reason: str = ""
     options: tuple = ()  # keyword options the model accepts, e.g. ("rtol", "backend")
+    #: False for a model left out of the error-envelope table (so select_model never picks it)
+    in_envelopes: bool = True
 
     def unavailable(self, field: str, kind: str = "summary") -> FieldUnavailableError:
         have = self.summary_fields if kind == "summary" else self.history_fields

@@ -124,7 +124,8 @@ def build(models=None, intervals=INTERVALS, points_per_interval: int = 4, repeat
     Parameters
     ----------
     models : iterable of str, optional
-        Model names; default ``zener_sym.MODELS`` at call time.
+        Model names; default ``zener_sym.MODELS`` at call time, less the models whose
+        ``in_envelopes`` is False.
     intervals : sequence of (lo, hi)
         Lambda intervals.
     points_per_interval : int
@@ -142,7 +143,10 @@ def build(models=None, intervals=INTERVALS, points_per_interval: int = 4, repeat
     from ..api import history, summary
     from ..models import REGISTRY, get_model
 
-    names = list(REGISTRY) if models is None else list(models)
+    # models that declare ``in_envelopes = False`` (families with options measured elsewhere, e.g.
+    # "ham", docs/ham_convergence.md) are no candidates of select_model
+    names = ([n for n, m in REGISTRY.items() if getattr(m, "in_envelopes", True)]
+             if models is None else list(models))
     ms = [get_model(n) for n in names]
     if points_per_interval < 2:
         raise ValueError(f"points_per_interval must be >= 2, got {points_per_interval}")

@@ -1,0 +1,30 @@
+"""``zener-sym ham-convergence [--check]``: the convergence study of the HAM series
+(:mod:`zener_sym.bench.ham_convergence`): rewrite the table of docs/ham_convergence.md, its CSV
+and chart, or check that the committed table and CSV are fresh."""
+from __future__ import annotations
+
+from ..bench import ham_convergence
+
+
+def _run(args) -> int:
+    if args.check:
+        diffs = ham_convergence.check()
+        if diffs:
+            print("docs/ham_convergence.md or its CSV is stale (run 'zener-sym ham-convergence'):")
+            for d in diffs:
+                print("  " + d)
+            return 1
+        print("ham convergence table up to date")
+        return 0
+    for p in ham_convergence.write(with_chart=not args.no_chart):
+        print(f"wrote {p}")
+    return 0
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("ham-convergence", help="convergence study of the HAM series: orders, "
+                       "Liao's c0, both formulations, against exact (docs/ham_convergence.md)")
+    p.add_argument("--check", action="store_true",
+                   help="regenerate in memory; exit 1 with a diff if the committed table is stale")
+    p.add_argument("--no-chart", action="store_true", help="skip the chart")
+    p.set_defaults(func=_run)

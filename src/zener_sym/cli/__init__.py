@@ -12,11 +12,12 @@ import argparse
 import re
 import sys
 
-from . import (audit, bench, compare, derive, envelopes, exact_table, generate, report,
-               scene)
+from . import (audit, bench, compare, derive, envelopes, exact_table, figures, generate,
+               report, scene)
 
 #: The subcommand modules, in the order ``--help`` lists them.
-COMMANDS = (report, scene, compare, generate, derive, audit, bench, envelopes, exact_table)
+COMMANDS = (report, scene, compare, generate, derive, audit, bench, envelopes, exact_table,
+            figures)
 
 #: A value that starts like a negative number ("-1mm", "-.5"), which argparse would take for an
 #: option; it is joined to its option so that the range checks see it and say what is allowed.

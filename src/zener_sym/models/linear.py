@@ -55,10 +55,19 @@ def _kappa(stiffness) -> float:
                      f"{', '.join(STIFFNESS)}")
 
 
+def _omega(lam, kappa):
+    """omega = sqrt(kappa - beta^2) = sqrt(kappa (1 - s)(1 + s)), s = lambda sqrt(kappa) / 2
+    (factored, so it stays accurate close to the bound)."""
+    s = lam * math.sqrt(kappa) / 2.0
+    return np.sqrt(kappa * (1.0 - s) * (1.0 + s))
+
+
 def _check_bound(lam, kappa, stiffness):
     bound = 2.0 / math.sqrt(kappa)
-    if np.any(lam >= bound):
-        bad = float(np.asarray(lam)[lam >= bound].ravel()[0])
+    # also refuse a lambda that rounds onto the bound (omega = 0: no end of contact)
+    bad_mask = (lam >= bound) | ~(_omega(lam, kappa) > 0)
+    if np.any(bad_mask):
+        bad = float(np.asarray(lam)[bad_mask].ravel()[0])
         raise ValueError(f"model 'linear' (stiffness {stiffness!r}): lambda = {bad!r} is not "
                          f"below 2/sqrt(kappa) = {bound:.12g}, where the linear contact stops "
                          f"ending (overdamped); allowed: 0 <= lambda < {bound:.12g}")
@@ -70,7 +79,7 @@ def linear_summary(lam, stiffness: str = DEFAULT_STIFFNESS) -> dict:
     lam = np.asarray(lam, dtype=float)
     _check_bound(lam, kappa, stiffness)
     b = kappa * lam / 2.0
-    w = np.sqrt(kappa - b * b)
+    w = _omega(lam, kappa)
     tau_d = np.pi / w
     tau_dc = np.arctan2(w, b) / w
     delta_m = np.exp(-b * tau_dc) / math.sqrt(kappa)
@@ -92,7 +101,7 @@ def linear_history(lam, tau, stiffness: str = DEFAULT_STIFFNESS) -> dict:
     lam, tau = np.broadcast_arrays(np.asarray(lam, float), np.asarray(tau, float))
     _check_bound(lam, kappa, stiffness)
     b = kappa * lam / 2.0
-    w = np.sqrt(kappa - b * b)
+    w = _omega(lam, kappa)
     on = tau < np.pi / w
     t = np.where(on, tau, np.pi / w)  # the closed forms at tau_d hold the final values
     decay = np.exp(-b * t)

@@ -89,9 +89,11 @@ def draw(spec: FigureSpec, rows, plt):
             axe.set_yscale("log")
             if emax > 0:
                 # whole decades around the data, at least two, so small errors stay visible
-                lo = 10.0 ** np.floor(np.log10(max(emin, 1e-10)))
+                # at most five decades below the largest error: the dips to 0 at tau = 0 or
+                # at crossings would otherwise squeeze the curves into the top of the panel
                 hi = 10.0 ** np.ceil(np.log10(emax * 1.01))
-                axe.set_ylim(min(lo, hi / 100.0), hi)
+                lo = 10.0 ** np.floor(np.log10(max(emin, 1e-10)))
+                axe.set_ylim(min(max(lo, hi * 1e-5), hi / 100.0), hi)
             if c == 0:
                 axe.set_ylabel(_ERR_LABEL[spec.error_def], fontsize=6)
             plt.setp(ax.get_xticklabels(), visible=False)

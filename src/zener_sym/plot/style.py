@@ -43,8 +43,8 @@ MODEL_STYLES = {
 
 #: Integrator (solve_ivp method) -> (colour, marker) for the benchmark's solver families.
 METHOD_STYLES = {
-    "DOP853": (_OI["teal"], "o"), "RK45": (_OI["sky"], "s"), "LSODA": (_OI["yellow"], "^"),
-    "Radau": (_OI["grey"], "D"), "BDF": (_OI["olive"], "v"), "RK23": (_OI["purple"], "<"),
+    "DOP853": (_OI["teal"], "o"), "RK45": (_OI["sky"], "s"), "LSODA": ("#117733", "^"),
+    "Radau": ("#332288", "D"), "BDF": ("#661100", "v"), "RK23": ("#AA4499", "<"),
 }
 
 _FALLBACK = ("#332288", "#117733", "#DDCC77", "#AA4499", "#88CCEE", "#661100", "#6699CC")

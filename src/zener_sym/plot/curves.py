@@ -101,9 +101,9 @@ def force_history(lam_or_scene, model="exact", ax=None, reference: bool = True, 
             ax.set_title(rf"$\lambda = {lam:.4g}$")
         else:
             exact = scene.result(model="exact", warn=False)
-            t = np.linspace(0.0, 1.1 * exact.contact_duration, n)
+            t = np.linspace(0.0, 1.1 * exact.contact_duration_s, n)
             for name in names:
-                f = exact.history(t, model=name)["force"]
+                f = exact.history(t, model=name)["force_N"]
                 ax.plot(t * 1e6, f, **_line(name, n))
             ax.set_xlabel(_st.label("t_us"))
             ax.set_ylabel(_st.label("force_N"))

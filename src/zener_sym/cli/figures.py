@@ -22,12 +22,12 @@ def _run(args) -> int:
             return 1 if bad else 0
         B.check_out(args.out)
     except ValueError as exc:
-        print(f"zener-sym figures: {exc}", file=sys.stderr)
+        print(f"zener-sym figures: error: {exc}", file=sys.stderr)
         return 2
     try:
         B.build(args.out, only, formats, csv_only=args.csv_only)
     except ImportError as exc:
-        print(f"zener-sym figures: {exc}", file=sys.stderr)
+        print(f"zener-sym figures: error: {exc}", file=sys.stderr)
         return 2
     return 0
 

@@ -32,8 +32,9 @@ LAYERS = (
     ("models", ("zener_sym.models",)),
     ("api", ("zener_sym.api",)),
     # the package facade (zener_sym/__init__.py) re-exports the scene layer
-    ("scene", ("zener_sym.scene", "zener_sym")),
-    ("report/bench/audit", ("zener_sym.report", "zener_sym.bench", "zener_sym.audit")),
+    ("scene", ("zener_sym.scene", "zener_sym", "zener_sym.plot")),
+    ("report/bench/audit", ("zener_sym.report", "zener_sym.bench", "zener_sym.audit",
+                            "zener_sym.figures")),
     ("cli", ("zener_sym.cli", "zener_sym.__main__")),
 )
 

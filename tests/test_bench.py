@@ -55,3 +55,22 @@ def test_cached_reference_matches_a_fresh_mpmath_solve():
     tau = np.array(ref["tau"][repr(lam)][::20])
     np.testing.assert_allclose(s.history(tau)["force"], ref["force"][repr(lam)][::20], rtol=1e-13,
                                atol=1e-15)
+
+
+def test_error_map_marks_small_forces_and_lists_quiet_methods(tmp_path):
+    """The error map: errors on a log scale, cells where the exact force is below SMALL_FORCE
+    F_m marked (the contact's ends, s = 0 and s = 1), methods with nothing to show (error below
+    QUIET everywhere) listed instead of drawn."""
+    pytest.importorskip("matplotlib")
+    cat = [methods._registry_model("exact"), methods._registry_model("hunter")]
+    result, lams, s, errors, small = stability.run(cat, quick=True)
+    assert small[:, 0].all() and small[:, -1].all()
+    assert not small[0, 1:-1].any()  # at lambda = 0 the Hertz pulse is small only at its ends
+    assert small[-1, -2]  # at lambda = 10 the long recovery tail carries a small force
+    assert stability.quiet_methods(result, errors) == ["exact"]
+    assert np.nanmax(errors["hunter"]) > 0.5  # a symmetric pulse is far off at large lambda
+    stability.write_csv(result, lams, s, tmp_path / "map.csv", errors, small)
+    header = (tmp_path / "map.csv").read_text().splitlines()[0]
+    assert header.endswith("force_error,exact_force_small")
+    stability.chart(result, lams, s, tmp_path / "map.png", errors, small)
+    assert (tmp_path / "map.png").stat().st_size > 1000

@@ -285,6 +285,10 @@ ITEMS: tuple[Printed, ...] = (
                                   r" H from 0.18 to 0.75 mm 'to enable a wide range of lambda'"
                                   r" (Fig. 5 and the text use lambda from about 0.07 to 2.3)",
            '0.07, 2.3', 'lambda range'),
+    _claim("mueller_linear", r"Mueller's model always underestimates $\bar{F}_m$, with the relative error up"
+                             r" to 38.72% ... [the impulse] is compared with Mueller's solution, showing a"
+                             r" relative error between 12.60% and 52.63%",
+           '0.3872, 0.1260, 0.5263', 'max F_m rel. error, impulse rel. error from, to'),
 )
 
 

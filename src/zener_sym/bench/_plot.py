@@ -1,12 +1,7 @@
-"""matplotlib, imported lazily: it is the optional ``plot`` extra."""
+"""matplotlib, imported lazily: it is the optional ``plot`` extra (see zener_sym.plot.style)."""
 
 
 def pyplot():
-    try:
-        import matplotlib
-    except ImportError:
-        raise ImportError("charts need matplotlib: pip install 'zener-sym[plot]'") from None
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..plot.style import pyplot as _pyplot
 
-    return plt
+    return _pyplot(headless=True)

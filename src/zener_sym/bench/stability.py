@@ -1,10 +1,13 @@
-"""Stability map: where each method fails over lambda in [0, 10] and tau across the contact.
+"""Error map: each method's force error over lambda in [0, 10] and tau across the contact.
 
-Each cell (lambda, s = tau / tau_d) is classed as ``refused`` (a ValueError from the API: a clear
-error, the intended behaviour outside a model's validity), ``exception`` (any other exception: a
-bug), ``nan`` (a non-finite value), ``>10%``, ``>1%`` or ``ok``, by the force error
-|F − F_ref| / F_m,ref against the exact model (scipy, rtol 1e-12, itself checked against the
-mpmath path in the tests).
+Each cell (lambda, s = tau / tau_d) holds the force error |F − F_ref| / F_m,ref against the exact
+model (scipy, rtol 1e-12, itself checked against the mpmath path in the tests), drawn on a
+continuous log colour scale, and a class: ``refused`` (a ValueError from the API: a clear error,
+the intended behaviour outside a model's validity), ``exception`` (any other exception: a bug),
+``nan`` (a non-finite value), ``>10%``, ``>1%`` or ``ok``. Cells where the exact force is below
+``SMALL_FORCE`` of F_m (the contact's start and end) are marked: there every model is close to 0
+and a small error says little. A method whose error is below ``QUIET`` everywhere is listed in one
+line under the chart instead of drawn.
 """
 from __future__ import annotations
 
@@ -16,7 +19,12 @@ import numpy as np
 from ..exact import solver as exact
 
 CLASSES = ("ok", ">1%", ">10%", "nan", "exception", "refused")
-COLORS = ("#2ca02c", "#ffdd57", "#ff7f0e", "#9467bd", "#d62728", "#bbbbbb")
+#: Cells where the exact force is below this fraction of F_m are marked (not judged).
+SMALL_FORCE = 0.01
+#: Methods whose force error stays below this everywhere are summarised, not drawn.
+QUIET = 1e-6
+#: Range of the log colour scale of the force error.
+ERR_RANGE = (1e-8, 1.0)
 
 
 def grid(quick: bool = False):
@@ -34,27 +42,49 @@ def classify(err: np.ndarray) -> np.ndarray:
 
 
 def run(methods, quick: bool = False):
-    """Dict method name -> array of classes, shape (len(lams), len(s)); and the grid."""
+    """Classes and errors of each method on the grid.
+
+    Returns
+    -------
+    result : dict
+        method name -> array of classes, shape (len(lams), len(s)).
+    lams, s : ndarray
+        The grid.
+    errors : dict
+        method name -> force error |F - F_ref| / F_m,ref (NaN where refused or failed).
+    small : ndarray of bool
+        Cells where the exact force is below ``SMALL_FORCE`` F_m.
+    """
     lams, s = grid(quick)
     refs = [exact.solve(x) for x in lams]
     taus = [r.tau_d * s for r in refs]
     fref = [r.history(t)["force"] for r, t in zip(refs, taus)]
-    result = {}
+    small = np.array([f < SMALL_FORCE * r.F_m for f, r in zip(fref, refs)])
+    result, errors = {}, {}
     for m in methods:
         if m.force is None:
             continue
         cells = np.empty((len(lams), len(s)), dtype=object)
+        errs = np.full((len(lams), len(s)), np.nan)
         for i, lam in enumerate(lams):
             try:
                 with np.errstate(all="ignore"):
                     f = np.asarray(m.force(np.array([lam]), [taus[i]])[0], dtype=float)
-                cells[i] = classify(np.abs(f - fref[i]) / refs[i].F_m)
+                errs[i] = np.abs(f - fref[i]) / refs[i].F_m
+                cells[i] = classify(errs[i])
             except ValueError:
                 cells[i] = "refused"
             except Exception:
                 cells[i] = "exception"
         result[m.name] = cells
-    return result, lams, s
+        errors[m.name] = errs
+    return result, lams, s, errors, small
+
+
+def quiet_methods(result, errors) -> list:
+    """Methods with nothing to show: every cell answered and its error below ``QUIET``."""
+    return [n for n in result
+            if np.all(result[n] == "ok") and np.nanmax(errors[n]) < QUIET]
 
 
 def summary_rows(result, lams):
@@ -69,41 +99,75 @@ def summary_rows(result, lams):
     return rows
 
 
-def write_csv(result, lams, s, path: pathlib.Path) -> None:
+def write_csv(result, lams, s, path: pathlib.Path, errors=None, small=None) -> None:
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow(["method", "lambda", "tau_over_tau_d", "class"])
+        w.writerow(["method", "lambda", "tau_over_tau_d", "class", "force_error",
+                    "exact_force_small"])
         for name, cells in result.items():
             for i, lam in enumerate(lams):
                 for j, sj in enumerate(s):
-                    w.writerow([name, f"{lam:.4g}", f"{sj:.4g}", cells[i, j]])
+                    err = "" if errors is None or not np.isfinite(errors[name][i, j]) \
+                        else f"{errors[name][i, j]:.3g}"
+                    sm = "" if small is None else int(small[i, j])
+                    w.writerow([name, f"{lam:.4g}", f"{sj:.4g}", cells[i, j], err, sm])
 
 
-def chart(result, lams, s, path: pathlib.Path) -> None:
-    from ._plot import pyplot
+def chart(result, lams, s, path: pathlib.Path, errors=None, small=None) -> None:
+    """The error map: one panel per method that has something to show (package style)."""
+    from ..plot import style as st
 
-    plt = pyplot()
-    from matplotlib.colors import ListedColormap
+    plt = st.pyplot(headless=True)
+    from matplotlib.colors import ListedColormap, LogNorm
     from matplotlib.patches import Patch
 
-    names = list(result)
+    if errors is None:  # classes only: errors unknown, draw every method
+        errors = {n: np.full(c.shape, np.nan) for n, c in result.items()}
+    quiet = quiet_methods(result, errors)
+    names = [n for n in result if n not in quiet]
     ncol = 4
     nrow = max(1, -(-len(names) // ncol))
-    fig, axes = plt.subplots(nrow, ncol, figsize=(3.2 * ncol, 2.6 * nrow + 0.8), squeeze=False)
-    cmap = ListedColormap(COLORS)
-    for ax, name in zip(axes.flat, names):
-        idx = np.vectorize(CLASSES.index)(result[name]).astype(float)
-        ax.imshow(idx.T, origin="lower", aspect="auto", cmap=cmap, vmin=-0.5, vmax=len(CLASSES) - 0.5,
-                  extent=(lams[0], lams[-1], s[0], s[-1]))
-        ax.set_title(name, fontsize=7)
-        ax.set_xlabel("lambda", fontsize=7)
-        ax.set_ylabel("tau / tau_d", fontsize=7)
-        ax.tick_params(labelsize=6)
-    for ax in list(axes.flat)[len(names):]:
-        ax.axis("off")
-    fig.legend(handles=[Patch(color=c, label=k) for k, c in zip(CLASSES, COLORS)], loc="lower center",
-               ncol=len(CLASSES), fontsize=8)
-    fig.suptitle("Stability map: force error |F - F_exact| / F_m over the contact", fontsize=10)
-    fig.tight_layout(rect=(0, 0.05, 1, 0.97))
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    with plt.rc_context(st.RC):
+        fig, axes = plt.subplots(nrow, ncol, figsize=(st.PAGE_WIDTH, 1.75 * nrow + 0.9),
+                                 squeeze=False, sharex=True, sharey=True, layout="constrained")
+        ext = (lams[0], lams[-1], s[0], s[-1])
+        norm = LogNorm(*ERR_RANGE, clip=True)
+        fail_cmap = ListedColormap(["#bbbbbb", "#d62728", "#9467bd"])  # refused, exception, nan
+        im = None
+        for ax, name in zip(axes.flat, names):
+            e = np.where(errors[name] > 0, errors[name], ERR_RANGE[0])
+            im = ax.imshow(np.ma.masked_invalid(e).T, origin="lower", aspect="auto",
+                           cmap="viridis", norm=norm, extent=ext, interpolation="nearest")
+            code = np.full(result[name].shape, np.nan)
+            code[result[name] == "refused"] = 0
+            code[result[name] == "exception"] = 1
+            code[result[name] == "nan"] = 2
+            ax.imshow(np.ma.masked_invalid(code).T, origin="lower", aspect="auto", cmap=fail_cmap,
+                      vmin=-0.5, vmax=2.5, extent=ext, interpolation="nearest")
+            if small is not None:
+                ax.contourf(lams, s, small.T.astype(float), levels=[0.5, 1.5], colors="none",
+                            hatches=["////"])
+            ax.set_title(st.style_for(name)["label"] if name in st.MODEL_STYLES else name,
+                         fontsize=7)
+            ax.grid(False)
+        for ax in axes[-1]:
+            ax.set_xlabel(st.label("lam"))
+        for ax in axes[:, 0]:
+            ax.set_ylabel(r"$\tau/\tau_d$")
+        for ax in list(axes.flat)[len(names):]:
+            ax.axis("off")
+        if im is not None:
+            fig.colorbar(im, ax=axes, shrink=0.6, label=r"$|\bar F-\bar F_{\rm exact}|/\bar F_m$")
+        handles = [Patch(facecolor="#bbbbbb", label="refused (ValueError)"),
+                   Patch(facecolor="#d62728", label="exception"),
+                   Patch(facecolor="#9467bd", label="non-finite"),
+                   Patch(facecolor="white", edgecolor="black", hatch="////",
+                         label=f"exact force < {SMALL_FORCE:g} $\\bar F_m$")]
+        fig.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=4,
+                   frameon=False)
+        if quiet:
+            fig.text(0.5, -0.07, f"Not drawn (force error below {QUIET:g} everywhere): "
+                     + ", ".join(quiet), ha="center", va="top", fontsize=6, wrap=True)
+        fig.suptitle(r"Error map: force error over the contact, $\lambda \in [0, 10]$")
+        st.save(fig, path.with_suffix(""), (path.suffix.lstrip(".") or "png",))
+        plt.close(fig)

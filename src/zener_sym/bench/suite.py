@@ -41,9 +41,10 @@ def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str
     rows = workprecision.measure(cat, ref, quick=quick, log=log)
     workprecision.write_csv(rows, out / "work_precision.csv")
     charts = workprecision.charts(rows, out, ref["source"])
-    stab, lams, s = stability.run(representative(cat), quick=quick)
-    stability.write_csv(stab, lams, s, out / "stability.csv")
-    stability.chart(stab, lams, s, out / "stability.png")
+    stab, lams, s, stab_err, small = stability.run(representative(cat), quick=quick)
+    stability.write_csv(stab, lams, s, out / "stability.csv", stab_err, small)
+    stability.chart(stab, lams, s, out / "stability.png", stab_err, small)
+    quiet = stability.quiet_methods(stab, stab_err)
     tg = targets.run(quick=quick)
     if tg:
         with open(out / "targets.csv", "w", newline="") as fh:
@@ -95,11 +96,15 @@ def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str
         "",
         (_md_table(["method", "quantity", "status"], failed) if failed else "none"),
         "",
-        "## Stability map",
+        "## Error map",
         "",
-        "![stability](stability.png)",
+        "![error map](stability.png)",
         "",
-        "Smallest lambda in [0, 10] at which each class first appears (force history over the "
+        f"Force error |F - F_exact| / F_m on a log colour scale; hatched: the exact force is "
+        f"below {stability.SMALL_FORCE:g} F_m there. "
+        + (f"Not drawn, error below {stability.QUIET:g} everywhere: {', '.join(quiet)}. "
+           if quiet else "")
+        + "Smallest lambda in [0, 10] at which each class first appears (force history over the "
         "contact; `refused` = a ValueError from the API, the intended answer outside a model's "
         "validity):",
         "",

@@ -71,32 +71,45 @@ def write_csv(rows, path: pathlib.Path) -> None:
             w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
 
 
-def charts(rows, out: pathlib.Path, source: str) -> list[pathlib.Path]:
-    """One log-log chart per quantity: error (x) against time per lambda (y)."""
-    from ._plot import pyplot
+#: Math-text names of the charted quantities.
+_Q_LABEL = {"force_history": r"$\max|\bar F-\bar F_{\rm ref}|/\bar F_m$", "tau_d": r"$\tau_d$",
+            "e": r"$e$", "F_m": r"$\bar F_m$", "impulse": r"$\bar I(\tau_d)$",
+            "delta_m": r"$\bar\delta_m$", "xi": r"$\xi$"}
 
-    plt = pyplot()
+
+def charts(rows, out: pathlib.Path, source: str) -> list[pathlib.Path]:
+    """One log-log chart per quantity: error (x) against time per lambda (y), in the package
+    style (a fixed colour and marker per method family, legend right of the data)."""
+    from ..plot import style as st
+
+    plt = st.pyplot(headless=True)
 
     paths = []
     for q in CHART_QUANTITIES:
-        fig, ax = plt.subplots(figsize=(8, 5.5))
-        fams = {}
-        for r in rows:
-            if r["quantity"] == q and r["status"] == "ok" and np.isfinite(r["max_rel_error"]):
-                fams.setdefault(r["family"], []).append(r)
-        for i, (fam, rs) in enumerate(sorted(fams.items())):
-            x = [max(r["max_rel_error"], 1e-17) for r in rs]
-            y = [r["seconds_per_lambda"] for r in rs]
-            style = "-o" if len(rs) > 1 else "s"
-            ax.loglog(x, y, style, ms=4, label=fam, color=plt.cm.tab20(i % 20))
-        ax.set_xlabel(f"max relative error over lambda in [0, 2.4] ({'max |F - F_ref| / F_m' if q == 'force_history' else q})")
-        ax.set_ylabel("seconds per lambda (median)")
-        ax.set_title(f"Work-precision: {q}   (reference: {source})", fontsize=9)
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, loc="best", ncol=2)
-        fig.tight_layout()
-        p = out / f"work_precision_{q}.png"
-        fig.savefig(p, dpi=110)
-        plt.close(fig)
+        with plt.rc_context(st.RC):
+            fig, ax = plt.subplots(figsize=(st.PAGE_WIDTH * 0.62, 3.0))
+            fams = {}
+            for r in rows:
+                if r["quantity"] == q and r["status"] == "ok" and np.isfinite(r["max_rel_error"]):
+                    fams.setdefault(r["family"], []).append(r)
+            for fam, rs in sorted(fams.items()):
+                x = [max(r["max_rel_error"], 1e-17) for r in rs]
+                y = [r["seconds_per_lambda"] for r in rs]
+                kw = st.style_for(fam)
+                if len(rs) == 1:
+                    kw["linestyle"] = "none"
+                if not kw.get("marker"):
+                    kw["marker"] = "o"  # the exact model's line has none; a point needs one
+                ax.loglog(x, y, **kw)
+            what = _Q_LABEL.get(q, q)
+            ax.set_xlabel(f"max relative error of {what}" if q != "force_history" else what
+                          + r" over $\lambda\in[0, 2.4]$")
+            ax.set_ylabel("seconds per $\\lambda$ (median)")
+            ax.set_title(f"Work-precision: {what}   (reference: {source})", fontsize=7)
+            ax.grid(True, which="both", alpha=0.25)
+            st.legend_outside(ax, where="right")
+            p = out / f"work_precision_{q}.png"
+            st.save(fig, p.with_suffix(""), ("png",))
+            plt.close(fig)
         paths.append(p)
     return paths

@@ -58,28 +58,21 @@ PLOT_FORMATS = ("png", "pdf", "svg")
 
 
 def plot_force(result, out: str, n: int = 400) -> str:
-    """Plot F(t) of ``result``'s model against exact into ``out`` (needs matplotlib)."""
+    """Plot F(t) of ``result``'s model against exact into ``out`` (needs matplotlib), with the
+    package's chart style (:func:`zener_sym.plot.force_history`)."""
     try:
-        import matplotlib
+        from ..plot import force_history
+        from ..plot.style import pyplot, rc, save
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        raise SystemExit("--plot needs matplotlib: pip install 'zener-sym[plot]'") from None
-    exact = result.scene.result(model="exact", warn=False)
-    t_end = 1.1 * max(result.contact_duration_s, exact.contact_duration_s)
-    t = np.linspace(0.0, t_end, n)
-    fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot(t * 1e6, exact.force(t), "k-", lw=2, label="exact")
-    if result.model != "exact":
-        ax.plot(t * 1e6, result.force(t), "r--", lw=1.5, label=result.model)
-    ax.set_xlabel("t [us]")
-    ax.set_ylabel("F [N]")
-    ax.set_title(f"lambda = {result.lam:.4g}, model {result.model}")
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
+        pyplot(headless=True)
+    except ImportError as exc:
+        raise SystemExit(f"--plot: {exc}") from None
+    with rc() as plt:
+        ax = force_history(result.scene, model=result.model, n=n)
+        ax.set_title(rf"$\lambda = {result.lam:.4g}$, model {result.model}")
+        p = Path(out)
+        save(ax.figure, p.with_suffix(""), (p.suffix.lstrip(".") or "png",))
+        plt.close(ax.figure)
     return out
 
 

@@ -5,6 +5,8 @@ from . import exact  # noqa: F401  (registers "exact")
 from . import ham  # noqa: F401  (registers "ham0", "ham1")
 from . import ham_series  # noqa: F401  (registers "ham": any order, Liao's c0)
 from . import pulses  # noqa: F401  (registers "hertz", "hunter", "reed", "oneway")
+from . import linear  # noqa: F401  (registers "linear", "raman")
+from . import fits  # noqa: F401  (registers "fits")
 
 __all__ = ["Model", "REGISTRY", "register", "get_model", "SUMMARY_FIELDS", "HISTORY_FIELDS",
            "FieldUnavailableError"]

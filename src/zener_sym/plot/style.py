@@ -1,0 +1,195 @@
+"""The package's one chart style: a fixed look per model and method, math labels, units, fonts.
+
+Every chart of zener-sym (the paper's figures, the benchmark charts, scene plots) draws with
+:func:`style_for` and :func:`rc`, so a model has the same colour, marker and line in every chart
+and every run, labels are math text in the paper's notation, times are in "µs", legends sit
+outside the data and fonts stay readable at a journal's column width (3.5 in).
+
+The colours are the Okabe-Ito palette (distinguishable with the common colour-vision
+deficiencies), assigned by name, never by drawing order.
+"""
+from __future__ import annotations
+
+import zlib
+from contextlib import contextmanager
+
+__all__ = ["pyplot", "rc", "style_for", "label", "LABELS", "MODEL_STYLES", "METHOD_STYLES",
+           "COLUMN_WIDTH", "PAGE_WIDTH", "legend_outside", "save", "ERROR_LABEL", "error_label"]
+
+#: Figure widths in inches: one journal column, the full page.
+COLUMN_WIDTH = 3.5
+PAGE_WIDTH = 7.2
+
+_OI = {"black": "#000000", "orange": "#E69F00", "sky": "#56B4E9", "green": "#009E73",
+       "yellow": "#F0E442", "blue": "#0072B2", "vermillion": "#D55E00", "purple": "#CC79A7",
+       "grey": "#7F7F7F", "olive": "#999933", "wine": "#882255", "teal": "#44AA99"}
+
+#: Model name -> (colour, marker, line style, legend label). The exact solution is the black
+#: reference line; approximations are coloured and dashed/dotted so they stay apart in grey print.
+MODEL_STYLES = {
+    "exact": (_OI["black"], "", "-", "exact (Eq. 10)"),
+    "ham0": (_OI["blue"], "o", "--", "HAM 0th order"),
+    "ham1": (_OI["vermillion"], "s", "-.", "HAM 1st order"),
+    "hertz": (_OI["grey"], "h", ":", r"Hertz ($\lambda=0$)"),
+    "hunter": (_OI["green"], "^", (0, (5, 1.5)), "Hunter (Eq. 52)"),
+    "reed": (_OI["purple"], "v", (0, (3, 1, 1, 1, 1, 1)), "Reed (Eq. 53)"),
+    "oneway": (_OI["sky"], "D", (0, (1, 1)), "one-way coupling"),
+    "linear": (_OI["orange"], "P", (0, (6, 2)), "Mueller et al. (linear)"),
+    "raman": (_OI["olive"], "X", (0, (2, 2)), "Raman (small $\\lambda$)"),
+    "fits": (_OI["wine"], "*", (0, (4, 1, 1, 1)), "paper's fit (Eqs. 24, 55, 70, 80)"),
+    # not a model: the small-lambda form of the loss, Eq. (77), drawn in Fig. 14
+    "fit77": (_OI["teal"], "d", (0, (1, 2)), "Eq. (77), small $\\lambda$"),
+}
+
+#: Integrator (solve_ivp method) -> (colour, marker) for the benchmark's solver families.
+METHOD_STYLES = {
+    "DOP853": (_OI["teal"], "o"), "RK45": (_OI["sky"], "s"), "LSODA": ("#117733", "^"),
+    "Radau": ("#332288", "D"), "BDF": ("#661100", "v"), "RK23": ("#AA4499", "<"),
+}
+
+_FALLBACK = ("#332288", "#117733", "#DDCC77", "#AA4499", "#88CCEE", "#661100", "#6699CC")
+_FALLBACK_MARKERS = ("o", "s", "^", "v", "D", "P", "X")
+
+#: Quantity -> math-text axis label (paper notation; dimensionless unless a unit is given).
+LABELS = {
+    "lam": r"$\lambda$", "tau": r"$\tau$", "t_us": r"$t$ (µs)", "delta": r"$\bar\delta$",
+    "delta_m": r"$\bar\delta_m$", "delta_m_m32": r"$\bar\delta_m^{-3/2}$",
+    "tau_d": r"$\tau_d$", "tau_dc": r"$\tau_{dc}$", "tau_dr": r"$\tau_{dr}$", "eta": r"$\eta$",
+    "e": r"$e$", "F_m": r"$\bar F_m$", "force": r"$\bar F$", "force_N": r"$F$ (N)",
+    "impulse": r"$\bar I(\tau_d)$", "impulse_history": r"$\bar I$",
+    "velocity": r"$\bar V$", "deflection": r"$\bar w$", "int_F2": r"$\int_0^{\tau_d}\bar F^2\,d\tau$",
+    "xi": r"$\xi$", "V0": r"$V_0$ (m/s)",
+}
+
+#: Lower-panel label of the comparison figures.
+ERROR_LABEL = "rel. error"
+
+
+def error_label(what: str = "") -> str:
+    """The error axis label, e.g. ``|q - q_exact| / q_exact``."""
+    return what or r"$|q - q_{\rm exact}|\,/\,q_{\rm exact}$"
+
+
+def label(quantity: str) -> str:
+    """Math-text label of ``quantity`` (its name if unknown)."""
+    return LABELS.get(quantity, quantity)
+
+
+def _fallback(name: str):
+    i = zlib.crc32(name.encode())  # stable across runs and machines, unlike hash()
+    return _FALLBACK[i % len(_FALLBACK)], _FALLBACK_MARKERS[(i // 7) % len(_FALLBACK_MARKERS)]
+
+
+def style_for(name: str) -> dict:
+    """Matplotlib keyword arguments (color, marker, linestyle, label) for a model or method.
+
+    ``name`` is a model name (``"ham1"``), a model with options (``"exact backend=mpmath"``:
+    the model's colour, hollow markers, dotted), or a benchmark family such as
+    ``"exact, solve_ivp DOP853"`` (the integrator's colour) and ``"naive solve_ivp RK45"``
+    (the integrator's colour, dashed, hollow). Unknown names get a colour fixed by the name.
+
+    Examples
+    --------
+    >>> from zener_sym.plot.style import style_for
+    >>> style_for("exact")["color"]
+    '#000000'
+    >>> style_for("ham1")["color"] == style_for("ham1 backend=mpmath")["color"]
+    True
+    """
+    base, _, opts = name.partition(" ")
+    if base in MODEL_STYLES:
+        color, marker, ls, lab = MODEL_STYLES[base]
+        kw = dict(color=color, marker=marker or None, linestyle=ls, label=lab)
+        if opts:
+            kw.update(linestyle=":", markerfacecolor="none", label=f"{lab}, {opts}")
+        return kw
+    for method, (color, marker) in METHOD_STYLES.items():
+        if name.endswith("solve_ivp " + method):
+            naive = name.startswith("naive")
+            return dict(color=color, marker=marker, linestyle="--" if naive else "-",
+                        markerfacecolor="none" if naive else color,
+                        label=("naive " if naive else "") + method)
+    color, marker = _fallback(name)
+    return dict(color=color, marker=marker, linestyle="-", label=name)
+
+
+def pyplot(headless: bool = False):
+    """``matplotlib.pyplot``, imported lazily (it is the optional ``plot`` extra).
+
+    ``headless`` selects the Agg backend (files only), as the command line needs.
+    """
+    try:
+        import matplotlib
+    except ImportError:
+        raise ImportError("zener_sym.plot needs matplotlib, the optional [plot] extra: "
+                          "pip install 'zener-sym[plot]'") from None
+    if headless:
+        matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+#: rcParams of the style: 8 pt text at 3.5 in width, thin grids, no top/right spines.
+RC = {
+    "font.size": 8, "axes.titlesize": 8, "axes.labelsize": 8, "xtick.labelsize": 7,
+    "ytick.labelsize": 7, "legend.fontsize": 7, "legend.frameon": False,
+    "axes.spines.top": False, "axes.spines.right": False, "axes.grid": True,
+    "grid.alpha": 0.25, "grid.linewidth": 0.5, "lines.linewidth": 1.3, "lines.markersize": 4,
+    "mathtext.fontset": "dejavusans", "figure.dpi": 100, "savefig.dpi": 200,
+    "savefig.bbox": "tight", "savefig.pad_inches": 0.03, "axes.titleweight": "normal",
+    "svg.hashsalt": "zener-sym", "pdf.compression": 6,
+}
+
+
+@contextmanager
+def rc():
+    """Context manager applying the package style (``with rc(): ...``)."""
+    plt = pyplot()
+    with plt.rc_context(RC):
+        yield plt
+
+
+def legend_outside(fig_or_ax, handles=None, labels=None, where: str = "bottom", ncol=None):
+    """A legend outside the data: below the figure (``"bottom"``) or right of an axes.
+
+    For a figure, the legend collects the unique labels of all its axes (first occurrence).
+    """
+    if hasattr(fig_or_ax, "axes") and not hasattr(fig_or_ax, "plot"):  # a Figure
+        fig = fig_or_ax
+        if handles is None:
+            seen = {}
+            for ax in fig.axes:
+                for h, lab in zip(*ax.get_legend_handles_labels()):
+                    if not lab.startswith("_") and lab not in seen:
+                        seen[lab] = h
+            labels, handles = list(seen), list(seen.values())
+        n = ncol or min(len(labels), 4)
+        return fig.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                          ncol=max(n, 1), frameon=False)
+    ax = fig_or_ax
+    if where == "bottom":
+        return ax.legend(handles=handles, labels=labels, loc="upper center",
+                         bbox_to_anchor=(0.5, -0.22), ncol=ncol or 2, frameon=False) \
+            if handles is not None else ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.22),
+                                                  ncol=ncol or 2, frameon=False)
+    return ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
+
+
+_METADATA = {"png": {"Software": None}, "pdf": {"CreationDate": None, "ModDate": None,
+                                                 "Producer": None, "Creator": None},
+             "svg": {"Date": None, "Creator": None}}
+
+
+def save(fig, path, formats=("png",)) -> list:
+    """Save ``fig`` as ``path`` with each suffix in ``formats``, without time stamps or version
+    strings in the metadata; returns the written paths."""
+    from pathlib import Path
+
+    path = Path(path)
+    out = []
+    for fmt in formats:
+        p = path.with_suffix("." + fmt)
+        fig.savefig(p, format=fmt, metadata=_METADATA.get(fmt))
+        out.append(p)
+    return out

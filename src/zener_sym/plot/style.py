@@ -37,6 +37,7 @@ MODEL_STYLES = {
     "linear": (_OI["orange"], "P", (0, (6, 2)), "Mueller et al. (linear)"),
     "raman": (_OI["olive"], "X", (0, (2, 2)), "Raman (small $\\lambda$)"),
     "fits": (_OI["wine"], "*", (0, (4, 1, 1, 1)), "paper's fit (Eqs. 24, 55, 70, 80)"),
+    "ham": ("#332288", "p", (0, (3, 1)), "HAM series, order $M$"),
     # not a model: the small-lambda form of the loss, Eq. (77), drawn in Fig. 14
     "fit77": (_OI["teal"], "d", (0, (1, 2)), "Eq. (77), small $\\lambda$"),
 }

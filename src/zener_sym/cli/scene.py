@@ -6,7 +6,6 @@ import sys
 import warnings
 from pathlib import Path
 
-
 from ..scene.checks import ZenerWarning
 from ..scene.materials import PRESETS, Material
 from ..scene.units import si_value

@@ -139,7 +139,8 @@ class Context:
 
 
 def latex(e) -> str:
-    """LaTeX with fixed settings, so FORMULAS.md is byte-for-byte reproducible."""
-    if isinstance(e, str):
-        return e
-    return sp.latex(e, order="lex", ln_notation=False, mul_symbol=None, inv_trig_style="abbreviated")
+    """LaTeX in the paper's notation (:mod:`.printing`), deterministic, so FORMULAS.md is
+    byte-for-byte reproducible."""
+    from .printing import paper_latex  # noqa: PLC0415 (printing imports sympy only)
+
+    return paper_latex(e)

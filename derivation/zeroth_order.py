@@ -99,6 +99,8 @@ def derive(ctx: Context) -> dict:
               "SymPy", lambda: (sp.simplify(of_lam["tau_dc0"].subs(lam, 0) - of_lam["tau_dr0"].subs(lam, 0)) == 0,
                                 f"tau_d0(0) = {sp.N(of_lam['tau_d0'].subs(lam, 0), 10)}"))
 
+    # FORMULAS.md shows the same expressions before SymPy's simplify (as the paper writes them)
+    shown = {n: e.subs(sub) for n, e in (("tau_d0", tau_d0), ("tau_dc0", tau_dc0), ("tau_dr0", tau_dr0))}
     ctx.expr.update(beta_of_lam=beta_of_lam, omega0_of_lam=omega0_of_lam, lam_crit=lam_crit,
                     lam_crit_eq=lam_crit_eq, delta0=delta0, delta0_dot=delta0_dot, tau_d0=tau_d0,
                     tau_dc0=tau_dc0, tau_dr0=tau_dr0, eta0=eta0, e0=e0,
@@ -110,13 +112,13 @@ def derive(ctx: Context) -> dict:
            "general solution of (28); (29) gives c_1 = 1/omega0, c_2 = 0")
     ctx.eq("35", d0, delta0, "zeroth-order solution")
     ctx.eq("54", sp.Symbol(r"\tau_{d}"), tau_d0, "zeroth-order contact duration")
-    ctx.eq("54a", sp.Symbol(r"\tau_{d}"), of_lam["tau_d0"], "zeroth-order contact duration in lambda")
+    ctx.eq("54a", sp.Symbol(r"\tau_{d}"), shown["tau_d0"], "zeroth-order contact duration in lambda")
     ctx.eq("56", sp.Symbol(r"\dot{\bar\delta}_0"), delta0_dot, "zeroth-order velocity")
     ctx.eq("57", delta0_dot.subs(tau, sp.Symbol(r"\tau_{dc}")), 0, "end of compression")
     ctx.eq("78", sp.Symbol(r"\dot{\bar\delta}_0(\tau_d)"), -e0, "terminal relative velocity")
     ctx.eq("58", sp.Symbol(r"\tau_{dc}"), tau_dc0, "compression duration")
-    ctx.eq("59", sp.Symbol(r"\tau_{dc}"), of_lam["tau_dc0"], "compression duration in lambda")
-    ctx.eq("60", sp.Symbol(r"\tau_{dr}"), of_lam["tau_dr0"], "recovery duration in lambda")
+    ctx.eq("59", sp.Symbol(r"\tau_{dc}"), shown["tau_dc0"], "compression duration in lambda")
+    ctx.eq("60", sp.Symbol(r"\tau_{dr}"), shown["tau_dr0"], "recovery duration in lambda")
     ctx.eq("61", sp.Symbol(r"\eta"), eta0, "asymmetry index")
     ctx.eq("79", sp.Symbol("e"), e0, "zeroth-order restitution")
     ctx.eq("80", sp.Symbol("e"), e80, "zeroth-order restitution in lambda")

@@ -55,7 +55,7 @@ def test_stale_formulas_fails_with_diff(monkeypatch, tmp_path):
     stale.write_text(formulas.render(derive()).replace("(35)", "(135)"))
     monkeypatch.setattr(formulas, "formulas_path", lambda root=None: stale)
     fresh, diff = formulas.check(derive(), ROOT)
-    assert not fresh and "-## (135)" in diff and "+## (35)" in diff
+    assert not fresh and "-### (135)" in diff and "+### (35)" in diff
 
 
 @pytest.mark.slow

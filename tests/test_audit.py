@@ -144,7 +144,7 @@ def test_eq24_claim_is_the_maximum_of_an_independent_scan():
 
     r = audit_item(printed.by_id("claim:eq24_5pct"))
     text = " ".join(str(v) for v in r.as_dict().values())
-    m = re.search(r"max rel. error ([0-9.]+)% at lambda = ([0-9.]+)", text)
+    m = re.search(r"largest relative error ([0-9.]+)% at \$\\lambda = ([0-9.]+)\$", text)
     assert m, text
     err, at = float(m.group(1)) / 100, float(m.group(2))
     C = (5 / 4) ** (-3 / 5)

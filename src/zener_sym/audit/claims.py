@@ -19,6 +19,7 @@ from ..exact import solver as _exact
 from . import derived as D
 from . import printed as P
 from .printed import SYM
+from .texts import tex
 from .verdicts import rounds_to
 
 lam = SYM["lam"]
@@ -93,15 +94,40 @@ def _result(holds, derived, evidence, note=""):
     return ("claim-holds" if holds else "claim-fails", derived, evidence, note)
 
 
+def _pct(x, dec: int) -> str:
+    return f"{100 * x:.{dec}f}%"
+
+
+def bound_readings(worst: float, printed: str) -> tuple[bool, str]:
+    """Both readings of a printed bound "less than <printed>" (a fraction such as '0.0290').
+
+    Strict: the largest error, measured to more digits than printed, is below the bound (this
+    reading gives the verdict). To the printed digits: the largest error rounded to the printed
+    number of decimals equals the printed figure (the paper's figure is then its measurement).
+    Returns (strict verdict, one sentence with both readings).
+    """
+    dec = max(len(printed.split(".")[1]) - 2, 0) if "." in printed else 0  # decimals in percent
+    bound = float(printed)
+    strict = worst < bound
+    shown = _pct(worst, dec)
+    agrees = round(100 * worst, dec) == round(100 * bound, dec)
+    below = round(100 * worst, dec) <= round(100 * bound, dec)
+    text = (f"Read strictly, {_pct(worst, dec + 2)} is {'below' if strict else 'not below'} "
+            f"{_pct(bound, dec)}; to the printed digits it is {shown}, "
+            + ("the printed figure itself" if agrees else
+               "within the printed figure" if below else "above the printed figure"))
+    return strict, text
+
+
 @claim("tau_Hertz")
 def _tau_hertz():
     dm0, src = D.get("dm_lam0")
     val = sp.Float("2.94") * dm0  # (2) in the scales (9): t_Hertz / T = 2.94 delta_m / (T V0)
     ok, ev = rounds_to(val, _n("tau_Hertz"))
     ex = _exact_summary((0.0,)).tau_d[0]
-    return _result(ok, f"2.94 (5/4)^(2/5) = {float(val):.6f}",
-                   f"(2) with the derived scales: {ev}; derived form: {src}; the exact contact "
-                   f"duration of (10) at lambda = 0 is {float(ex):.6f}",
+    return _result(ok, f"$2.94\\,(5/4)^{{2/5}} = {float(val):.6f}$",
+                   f"(2) in the derived scales: {ev}. The exact contact duration of (10) at "
+                   f"$\\lambda = 0$ is {float(ex):.6f}. Derived form: {src}.",
                    "holds as arithmetic on (2); the exact Hertz value is 3.218 (2.94 is rounded)")
 
 
@@ -110,14 +136,16 @@ def _tau_d0():
     f, src = D.get("tau_d0_of_lam")
     val = sp.N(f.subs(lam, 0), 20)
     ok, ev = rounds_to(val, _n("tau_d0"))
-    return _result(ok, f"pi/omega0(0) = {float(val):.6f}", f"{ev}; derived form: {src}")
+    return _result(ok, f"$\\pi/\\omega_0(0) = {float(val):.6f}$",
+                   f"$\\tau_d = \\pi/\\omega_0$ of (54) at $\\lambda = 0$: {ev}. Derived form: {src}.")
 
 
 @claim("omega0_lam0")
 def _omega0():
     w, src = D.get("omega0_lam0")
     ok, ev = rounds_to(sp.N(w, 20), _n("omega0_lam0"))
-    return _result(ok, f"(5/4)^(1/10) = {float(sp.N(w)):.6f}", f"{ev}; derived form: {src}")
+    return _result(ok, f"$(5/4)^{{1/10}} = {float(sp.N(w)):.6f}$",
+                   f"$\\omega_0 = \\sqrt{{k(0)}}$: {ev}. Derived form: {src}.")
 
 
 @claim("lambda_bound")
@@ -127,9 +155,9 @@ def _lam_bound():
     with mp.workdps(30):
         root = mp.findroot(g, 2.4)
     ok, ev = rounds_to(root, _n("lambda_bound"))
-    return _result(ok, f"root of 4/k(lam) = lam^2: {mp.nstr(root, 15)}",
-                   f"mpmath findroot at 30 digits on 4/k - lam^2 = 0 (k of (25) derived); {ev}; "
-                   f"derived form: {src}")
+    return _result(ok, f"the root of $4/k = \\lambda^2$ is {mp.nstr(root, 15)}",
+                   f"mpmath's findroot at 30 digits on $4/k - \\lambda^2 = 0$ with the derived $k$ of "
+                   f"(25): {ev}. Derived form: {src}.")
 
 
 @claim("eq24_5pct")
@@ -140,9 +168,13 @@ def _eq24():
     exact = np.array([delta_m_exact(v) for v in lams]) ** -1.5
     rel = np.abs(est(lams) / exact - 1)
     i = int(np.argmax(rel))
-    return _result(rel.max() < _f("eq24_5pct"), f"max rel. error {100 * rel.max():.3f}% at lambda = {lams[i]:.3g}",
-                   f"(24) with the derived constant, vs delta_m^(-3/2) of the exact ODE (compression "
-                   f"phase, DOP853 rtol 1e-11) at {lams.size} lambda in [0, {top:g}]; derived form: {src}")
+    strict, readings = bound_readings(float(rel.max()), _n("eq24_5pct"))
+    return _result(strict, _worst_text(rel.max(), lams[i]),
+                   f"(24) with the derived constant $(5/4)^{{-3/5}}$ against "
+                   f"$\\bar\\delta_m^{{-3/2}}$ of the exact ODE (compression phase, DOP853, rtol "
+                   f"$10^{{-11}}$) at {lams.size} values of $\\lambda$ in [0, {top:g}]: the claim is about "
+                   f"$\\bar\\delta_m^{{-3/2}}$, so the error is measured in it. {readings}. "
+                   f"Derived form: {src}.")
 
 
 def _ham_field(model, field, lams):
@@ -150,28 +182,35 @@ def _ham_field(model, field, lams):
     return getattr(zs.summary(lams, model=model), field)
 
 
-def _ham_claim(model, field, limit, lams, label):
+def _worst_text(worst, at) -> str:
+    """The decisive number of an error claim: 'largest relative error 2.905% at lambda = 2.2'."""
+    return f"largest relative error {100 * worst:.3f}% at $\\lambda = {at:.3g}$"
+
+
+def _ham_claim(model, field, printed, lams, label):
     import zener_sym as zs
     if model not in zs.MODELS:
-        return ("not-checkable", "", f"model {model!r} is not registered in zener_sym.MODELS "
-                f"(have: {', '.join(zs.MODELS)})", "the HAM kernels (issue 4) are needed")
+        return ("not-checkable", "", f"Model `{model}` is not registered in zener_sym.MODELS "
+                f"(registered: {', '.join(zs.MODELS)}).", "the HAM kernels (issue 4) are needed")
     approx = _ham_field(model, field, lams)
     ex = getattr(_exact_summary(tuple(lams)), field)
     rel = np.abs(approx / ex - 1)
     i = int(np.argmax(rel))
-    return _result(rel.max() < limit, f"max rel. error {100 * rel.max():.3f}% at lambda = {lams[i]:.3g}",
-                   f"{label} of model {model!r} vs the exact ODE at {lams.size} lambda in "
-                   f"[{lams[0]:g}, {lams[-1]:g}] (the paper compared with FEM)")
+    strict, readings = bound_readings(float(rel.max()), printed)
+    return _result(strict, _worst_text(rel.max(), lams[i]),
+                   f"{label} of model `{model}` against the exact ODE at {lams.size} values of "
+                   f"$\\lambda$ in [{lams[0]:g}, {lams[-1]:g}] (the paper compared with FEM). "
+                   f"{readings}.")
 
 
 @claim("Fm_ham1_2.90pct")
 def _fm1():
-    return _ham_claim("ham1", "F_m", _f("Fm_ham1_2.90pct"), LAM_HAM, "F_m")
+    return _ham_claim("ham1", "F_m", _n("Fm_ham1_2.90pct"), LAM_HAM, "$\\bar F_m$")
 
 
 @claim("impulse_ham1_3.95pct")
 def _imp1():
-    return _ham_claim("ham1", "impulse", _f("impulse_ham1_3.95pct"), LAM_HAM, "impulse")
+    return _ham_claim("ham1", "impulse", _n("impulse_ham1_3.95pct"), LAM_HAM, "The impulse")
 
 
 @claim("Fm_ham0_5.11pct")
@@ -188,9 +227,11 @@ def _fm0():
     ex = _exact_summary(tuple(lams)).F_m
     rel = np.abs(fm(lams) / ex - 1)
     i = int(np.argmax(rel))
-    return _result(rel.max() < _f("Fm_ham0_5.11pct"), f"max rel. error {100 * rel.max():.3f}% at lambda = {lams[i]:.3g}",
-                   f"F_m0 = delta0(tau_dc0)^(3/2) from the derived zeroth order (numpy), vs the exact "
-                   f"ODE at {lams.size} lambda in ({lo:g}, 2.4]; derived form: {src}",
+    strict, readings = bound_readings(float(rel.max()), _n("Fm_ham0_5.11pct"))
+    return _result(strict, _worst_text(rel.max(), lams[i]),
+                   f"$\\bar F_m = \\bar\\delta_0(\\tau_{{dc}})^{{3/2}}$ of the derived zeroth order against "
+                   f"the exact ODE at {lams.size} values of $\\lambda$ in ({lo:g}, 2.4]. {readings}. "
+                   f"Derived form: {src}.",
                    "the paper's reference is FEM")
 
 
@@ -204,11 +245,12 @@ def _eq70():
     hi = lams >= lam_from
     frac10 = float(np.mean(rel < mostly))
     ok = rel[hi].max() < above and frac10 > 0.5
-    return _result(ok, f"max rel. error {100 * rel[hi].max():.2f}% for lambda >= {lam_from:g}; "
-                       f"{100 * frac10:.0f}% of lambda in [0.1, 2.4] within {100 * mostly:g}% "
-                       f"(worst {100 * rel.max():.1f}% at lambda = {lams[int(np.argmax(rel))]:.3g})",
-                   "printed (70) vs xi = 1 - e^2 of the exact ODE at 24 lambda in [0.1, 2.4] "
-                   "('most cases' read as more than half of that range)", "the paper's reference is FEM")
+    return _result(ok, f"largest relative error {100 * rel[hi].max():.2f}% for $\\lambda \\geq {lam_from:g}$; "
+                       f"{100 * frac10:.0f}% of $\\lambda$ in [0.1, 2.4] within {100 * mostly:g}% "
+                       f"(worst {100 * rel.max():.1f}% at $\\lambda = {lams[int(np.argmax(rel))]:.3g}$)",
+                   "The printed (70) against $\\xi = 1 - e^2$ of the exact ODE at 24 values of "
+                   "$\\lambda$ in [0.1, 2.4]; 'most cases' is read as more than half of that range.",
+                   "the paper's reference is FEM")
 
 
 @claim("eq80_to_1.8")
@@ -221,11 +263,11 @@ def _eq80():
     rel = np.abs(e0(lams) / ex - 1)
     i = int(np.argmax(err))
     return _result(err.max() <= 0.03,
-                   f"max |e0 - e| = {err.max():.4f} at lambda = {lams[i]:.3g} (max rel. "
-                   f"{100 * rel.max():.1f}%)",
-                   f"Eq. (80) (derived constant) vs e of the exact ODE at 19 lambda in [0, {top:g}]; "
-                   f"'predicts well' read as absolute error <= 0.03 (what Fig. 15 can show); "
-                   f"derived form: {src}")
+                   f"largest error in $e$ {err.max():.4f} at $\\lambda = {lams[i]:.3g}$ (largest relative "
+                   f"error {100 * rel.max():.1f}%)",
+                   f"Eq. (80) with the derived constant against $e$ of the exact ODE at 19 values of "
+                   f"$\\lambda$ in [0, {top:g}]; 'predicts well' is read as an absolute error of at most "
+                   f"0.03 (what Fig. 15 can show). Derived form: {src}.")
 
 
 @claim("mueller_linear")
@@ -275,11 +317,12 @@ def _intF2():
     fit = np.polyfit(lams, ex, 2)[::-1]
     ok, ev = rounds_to(ex[0], _n("int_F2_poly"))
     rel = np.abs(poly / ex - 1)
-    return _result(ok, f"int F^2 at lambda = 0 is {ex[0]:.5f}; least-squares quadratic on [0, 0.5]: "
-                       f"{fit[0]:.3f} {fit[1]:+.3f} lambda {fit[2]:+.3f} lambda^2",
-                   f"exact ODE at 11 lambda in [0, 0.5]; the lambda = 0 value is Hertz's and does not "
-                   f"depend on the fitting range: {ev}; the printed polynomial is off by up to "
-                   f"{100 * rel.max():.1f}% on [0, 0.5]")
+    return _result(ok, f"$\\int_0^{{\\tau_d}}\\bar F^2 d\\tau = {ex[0]:.5f}$ at $\\lambda = 0$; the "
+                       f"least-squares quadratic on [0, 0.5] is ${fit[0]:.3f} {'-' if fit[1] < 0 else '+'} "
+                       f"{abs(fit[1]):.3f}\\lambda {'-' if fit[2] < 0 else '+'} {abs(fit[2]):.3f}\\lambda^2$",
+                   f"The exact ODE at 11 values of $\\lambda$ in [0, 0.5]. The value at $\\lambda = 0$ is "
+                   f"Hertz's and does not depend on the fitting range: {ev}. The printed polynomial is off "
+                   f"by up to {100 * rel.max():.1f}% on [0, 0.5].")
 
 
 @claim("fit55")
@@ -290,16 +333,17 @@ def _fit55():
     fit = a * np.exp(b * lams**c)
     ex = _exact_summary(tuple(lams)).tau_d
     rel_ex = np.abs(fit / ex - 1)
-    info = (f"vs the exact ODE: max rel. error {100 * rel_ex.max():.1f}% at lambda = "
-            f"{lams[int(np.argmax(rel_ex))]:.3g}")
+    info = (f"Against the exact ODE its largest relative error is {100 * rel_ex.max():.1f}% at "
+            f"$\\lambda = {lams[int(np.argmax(rel_ex))]:.3g}$.")
     if "ham1" not in zs.MODELS:
-        return ("not-checkable", info, "the fit is of the first-order solution, and model 'ham1' is "
-                "not registered; " + info, "the HAM kernels (issue 4) are needed")
+        return ("not-checkable", info, "The fit is of the first-order solution, and model `ham1` is "
+                "not registered. " + info, "the HAM kernels (issue 4) are needed")
     h = _ham_field("ham1", "tau_d", lams)
     rel = np.abs(fit / h - 1)
-    return _result(rel.max() < _f("eq24_5pct"), f"max rel. difference {100 * rel.max():.2f}% from ham1",
-                   f"(55) vs tau_d of model 'ham1' at 13 lambda in [0, 2.4] (a fit: 5% tolerance); "
-                   + info)
+    return _result(rel.max() < _f("eq24_5pct"), f"largest relative difference {100 * rel.max():.2f}% "
+                   f"from the first-order $\\tau_d$",
+                   f"(55) against $\\tau_d$ of model `ham1` at 13 values of $\\lambda$ in [0, 2.4] "
+                   f"(a fit: 5% tolerance). " + info)
 
 
 @claim("xi_V0^0.2")
@@ -307,9 +351,9 @@ def _xi_v0():
     lp, src = D.get("lam_phys")
     ex = sp.simplify(SYM["V0"] * sp.diff(lp, SYM["V0"]) / lp)
     ok, ev = rounds_to(ex, _n("xi_V0^0.2"))
-    return _result(ok, f"d ln(lambda)/d ln(V0) = {ex}; {ev}",
-                   f"xi ~ 2 lambda int F^2 for small lambda and the derived lambda of (11); "
-                   f"derived form: {src}")
+    return _result(ok, f"$d\\ln\\lambda/d\\ln V_0 = {tex(ex)}$; {ev}",
+                   f"$\\xi \\approx 2\\lambda\\int\\bar F^2 d\\tau$ for small $\\lambda$, with the derived "
+                   f"$\\lambda$ of (11). Derived form: {src}.")
 
 
 @claim("table1_lambda_range")
@@ -322,10 +366,10 @@ def _table1():
     (v_lo, v_hi), (h_lo, h_hi) = tb["V0_range"], tb["H_range"]
     lo, hi = float(f(h_hi, v_lo)), float(f(h_lo, v_hi))
     ok = abs(lo / _f("table1_lambda_range", 0) - 1) < 0.15 and abs(hi / _f("table1_lambda_range", 1) - 1) < 0.15
-    return _result(ok, f"lambda from {lo:.3g} (H = 0.75 mm, V0 = 1 m/s) to {hi:.3g} "
-                       f"(H = 0.18 mm, V0 = 20 m/s)",
-                   f"derived lambda of (11) with m* = (4/3) pi R^3 rho1 and Table 1 values; 'about' "
-                   f"read as within 15%; derived form: {src}")
+    return _result(ok, f"$\\lambda$ from {lo:.3g} ($H$ = 0.75 mm, $V_0$ = 1 m/s) to {hi:.3g} "
+                       f"($H$ = 0.18 mm, $V_0$ = 20 m/s)",
+                   f"The derived $\\lambda$ of (11) with $m^* = \\frac{{4}}{{3}}\\pi R^3\\rho_1$ and the values "
+                   f"of Table 1; 'about' is read as within 15%. Derived form: {src}.")
 
 
 def _fit_claim(item_id):

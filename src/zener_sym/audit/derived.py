@@ -31,13 +31,13 @@ def registry():
     try:
         from zener_sym.derivation import registry as reg  # noqa: PLC0415 (offline import)
     except Exception as exc:  # the derivation package may not exist yet
-        return f"derivation registry not importable ({type(exc).__name__})"
+        return f"the derivation registry is not importable ({type(exc).__name__})"
     try:
         # Without its checks: the forms are the same, the checks run in `zener-sym derive` and the
         # derivation's tests; with them the audit would take minutes.
         return reg.derive(checks=False)
     except Exception as exc:
-        return f"derivation registry failed ({type(exc).__name__}: {str(exc)[:80]})"
+        return f"the derivation registry failed ({type(exc).__name__}: {str(exc)[:80]})"
 
 
 #: Registry ``.symbols`` keys whose audit name differs (the registry's m is m*, Estar is E*).
@@ -168,12 +168,12 @@ def get(name: str, *, prefer_registry: bool = True):
         When neither provides ``name``; the message says why.
     """
     reg = registry()
-    why = reg if isinstance(reg, str) else f"derivation registry has no {name!r}"
+    why = reg if isinstance(reg, str) else f"the derivation registry has no `{name}`"
     loc = local()
     if prefer_registry and not isinstance(reg, str) and name in getattr(reg, "expr", {}):
         expr = _to_audit_symbols(reg.expr[name])
         if name not in loc:
-            return expr, "derivation registry"
+            return expr, "the derivation registry"
         # Two independent routes: they must agree, or the audit says so and keeps its own form
         # (a symbol-naming mismatch must not turn into a false "typo").
         from .verdicts import compare  # noqa: PLC0415 (verdicts imports printed only)
@@ -183,9 +183,9 @@ def get(name: str, *, prefer_registry: bool = True):
         if ok:
             # Same value by two routes; show the audit's form so that AUDIT.md does not change
             # with the registry's printing of it.
-            return loc[name], "derivation registry (agrees with the audit's own derivation)"
-        return loc[name], (f"derived in the audit: the registry's {name!r} differs from it ({ev}); "
-                           f"the integrator should look")
+            return loc[name], "the derivation registry, which agrees with the audit's own derivation"
+        return loc[name], (f"the audit's own derivation; the registry's `{name}` differs from it "
+                           f"({ev}), and the integrator should look")
     if name in loc:
-        return loc[name], f"derived in the audit ({why})"
-    raise NotAvailable(f"{why}, and the audit does not derive {name!r} itself")
+        return loc[name], f"the audit's own derivation ({why})"
+    raise NotAvailable(f"{why[0].upper() + why[1:]}, and the audit does not derive `{name}` itself.")

@@ -280,10 +280,10 @@ ITEMS: tuple[Printed, ...] = (
            '3.214, 0.23, 1.80', 'tau_Hertz, factor, power'),
     _claim("xi_V0^0.2", r"for small $\lambda$, we find that the Zener loss is proportional to $V_0^{0.2}$",
            '0.2', 'power of V0'),
-    _claim("table1_lambda_range", r"Table 1 (R = 0.9 mm; sphere E = 12.23 GPa, nu = 0.21, rho = 879 kg/m^3;"
-                                  r" plate E = 73 GPa, nu = 0.21, rho = 2500 kg/m^3), V0 from 1 to 20 m/s,"
-                                  r" H from 0.18 to 0.75 mm 'to enable a wide range of lambda'"
-                                  r" (Fig. 5 and the text use lambda from about 0.07 to 2.3)",
+    _claim("table1_lambda_range", r"Table 1 ($R$ = 0.9 mm; sphere $E$ = 12.23 GPa, $\nu$ = 0.21, $\rho$ ="
+                                  r" 879 kg/m$^3$; plate $E$ = 73 GPa, $\nu$ = 0.21, $\rho$ = 2500 kg/m$^3$),"
+                                  r" $V_0$ from 1 to 20 m/s, $H$ from 0.18 to 0.75 mm 'to enable a wide range"
+                                  r" of $\lambda$' (Fig. 5 and the text use $\lambda$ from about 0.07 to 2.3)",
            '0.07, 2.3', 'lambda range'),
     _claim("mueller_linear", r"Mueller's model always underestimates $\bar{F}_m$, with the relative error up"
                              r" to 38.72% ... [the impulse] is compared with Mueller's solution, showing a"
@@ -310,12 +310,15 @@ def numbers(item: Printed) -> list[str]:
     return [n.strip() for n in (item.parse or "").split(",") if n.strip()]
 
 
-def parse(item: Printed):
-    """The SymPy form of the printed transcription (None when there is none)."""
+def parse(item: Printed, evaluate: bool = True):
+    """The SymPy form of the printed transcription (None when there is none).
+
+    ``evaluate=False`` keeps the printed structure for display (``(5/4)^{-3/2}`` stays a power).
+    """
     if item.parse is None:
         return None
     if item.kind == "claim":
         return numbers(item)
     ns = dict(NS, gamma=sp.gamma)
     ns["I_"] = sp.I
-    return sp.sympify(item.parse, locals=ns, rational=False)
+    return sp.sympify(item.parse, locals=ns, rational=False, evaluate=evaluate)

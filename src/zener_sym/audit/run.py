@@ -1,19 +1,52 @@
 """Run the audit: every printed item through its check, as Result rows in a fixed order."""
 from __future__ import annotations
 
+import re
 import time
 
 from . import checks, claims, derived
 from .printed import ITEMS, Printed, parse
+from .texts import tex
+from .titles import TITLES
 from .verdicts import VERDICTS, Result
 
-__all__ = ["audit_item", "run_audit", "summary_line"]
+__all__ = ["audit_item", "run_audit", "summary_line", "TEXT_DERIVED"]
+
+#: Equations checked as claims (fits): their derived column is a measurement, not a formula.
+TEXT_DERIVED = ("55", "70")
+
+
+def _clean_raw(raw: str) -> str:
+    """The transcription's LaTeX without its tag, its line breaks and its alignment marks."""
+    t = re.sub(r"\\tag\{[^}]*\}|\\quad \(\d+\)\s*$", "", raw).strip()
+    for a, b in ((r"\begin{cases}", ""), (r"\end{cases}", ""), (r"\begin{aligned}", ""),
+                 (r"\end{aligned}", ""), ("&", ""), (r"\\", r",\quad ")):
+        t = t.replace(a, b)
+    return " ".join(t.split()).strip(" ,")
+
+
+def _form(item_id: str) -> str:
+    return TITLES.get(item_id, ("", "{}"))[1]
+
+
+def _fill(form: str, body: str) -> str:
+    return form.replace("{}", body, 1)
 
 
 def _printed_text(item: Printed) -> str:
+    """Claims: the quoted text (markdown with inline math). Equations and definitions: LaTeX of
+    the transcription as the audit reads it (garbled ones: the transcription's own LaTeX)."""
     if item.kind == "claim":
         return item.raw
-    return item.parse if item.parse is not None else item.raw
+    if item.parse is None:
+        return _clean_raw(item.raw)
+    return _fill(_form(item.id), tex(parse(item, evaluate=False), item.id, literal=True))
+
+
+def _derived_text(item: Printed, der: str) -> str:
+    if not der or item.kind == "claim" or item.id in TEXT_DERIVED:
+        return der
+    return der if "=" in der or ">" in der else _fill(_form(item.id), der)
 
 
 def audit_item(item: Printed) -> Result:
@@ -27,11 +60,11 @@ def audit_item(item: Printed) -> Result:
     else:
         fn = checks.CHECKS.get(item.id)
     if item.parse is None and item.kind != "claim" and fn is None:
-        return Result(item.id, item.kind, "garbled", item.raw, "", "the transcription cannot be "
-                      "read as a formula", "")
+        return Result(item.id, item.kind, "garbled", item.raw, "", "The transcription cannot be "
+                      "read as a formula.", "")
     if fn is None:
         return Result(item.id, item.kind, "not-checkable", _printed_text(item), "",
-                      "no check is defined for this item", "")
+                      "No check is defined for this item.", "")
     try:
         if item.parse is not None:
             parse(item)  # a transcription that does not parse is a bug in printed.py
@@ -39,15 +72,11 @@ def audit_item(item: Printed) -> Result:
     except derived.NotAvailable as exc:
         verdict, der, evidence, note = "not-checkable", "", str(exc), ""
     except Exception as exc:  # a failing check must not hide the others
-        verdict, der, evidence, note = ("not-checkable", "", f"check failed: {type(exc).__name__}: "
+        verdict, der, evidence, note = ("not-checkable", "", f"The check failed: {type(exc).__name__}: "
                                         f"{exc}", "audit bug: please report")
-    if item.kind == "claim":
-        pass  # a claim's ``reads`` names its printed numbers; the note stays the check's
-    elif item.reads and not note:
-        note = item.reads
-    elif item.reads:
-        note = f"{item.reads}: {note}"
-    return Result(item.id, item.kind, verdict, _printed_text(item), der, evidence, note)
+    # the item's ``reads`` is shown through its title and form (titles.py), not repeated here
+    return Result(item.id, item.kind, verdict, _printed_text(item), _derived_text(item, der),
+                  evidence, note)
 
 
 def run_audit(ids=None) -> list[Result]:

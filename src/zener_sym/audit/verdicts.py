@@ -93,7 +93,7 @@ def compare(printed, derived, n_points: int = 6, seed: int = 12345, rtol: float 
         try:
             diff = sp.simplify(P - D)
             if diff == 0:
-                return True, "symbolic: simplify(printed - derived) = 0"
+                return True, "SymPy simplifies printed minus derived to 0"
         except Exception:  # simplify can fail on odd printed forms; fall through to numbers
             pass
     rng = random.Random(seed)
@@ -103,17 +103,16 @@ def compare(printed, derived, n_points: int = 6, seed: int = 12345, rtol: float 
         pt = sample_point(syms, rng)
         a, b = _num(P, pt), _num(D, pt)
         if a is None or b is None:
-            return False, "numeric: could not evaluate at a sample point"
+            return False, "the forms could not be evaluated at a sample point"
         err = abs(a - b) / max(abs(b), 1e-300)
         if err > worst:
             worst, where = err, (pt, a, b)
     if worst <= rtol:
-        return True, (f"numeric: 30-digit values agree at {n_points} random points "
-                      f"(max rel. diff {worst:.1e})")
+        return True, (f"30-digit values agree at {n_points} random points (largest relative "
+                      f"difference {_sci(worst)})")
     pt, a, b = where
-    at = ", ".join(f"{s}={float(v):.4g}" for s, v in pt.items())
-    return False, (f"numeric: at {at}: printed {_fmt(a)}, derived {_fmt(b)} "
-                   f"(rel. diff {worst:.3g})")
+    return False, (f"at {_at(pt)} the printed form gives {_fmt(a)} and the derived one {_fmt(b)} "
+                   f"(relative difference {_sci(worst)})")
 
 
 def equal_up_to_factor(printed, derived, n_points: int = 6, seed: int = 7, rtol: float = 1e-20):
@@ -126,22 +125,41 @@ def equal_up_to_factor(printed, derived, n_points: int = 6, seed: int = 7, rtol:
         pt = sample_point(syms, rng)
         a, b = _num(P, pt), _num(D, pt)
         if a is None or b is None or b == 0:
-            return False, "numeric: could not evaluate the residuals at a sample point"
+            return False, "the residuals could not be evaluated at a sample point"
         ratios.append(a / b)
     c = ratios[0]
     spread = max(abs(r - c) for r in ratios) / max(abs(c), 1e-300)
     if abs(c) > 0 and spread <= rtol:
-        return True, (f"numeric: printed residual = {_fmt(c)} x derived residual at {n_points} "
-                      f"random points with test functions (spread {spread:.1e})")
-    return False, (f"numeric: printed/derived residual ratio varies between {_fmt(ratios[0])} and "
-                   f"{_fmt(ratios[-1])} at random points (spread {spread:.3g})")
+        return True, (f"the printed residual is {_fmt(c)} times the derived one at {n_points} "
+                      f"random points with test functions (spread {_sci(spread)})")
+    return False, (f"the ratio of the printed to the derived residual varies between "
+                   f"{_fmt(ratios[0])} and {_fmt(ratios[-1])} at random points (spread "
+                   f"{_sci(spread)}), so the two equations differ")
 
 
 def _fmt(z) -> str:
     z = complex(z)
     if abs(z.imag) <= 1e-25 * max(1.0, abs(z.real)):
         return f"{z.real:.10g}"
-    return f"{z.real:.6g}{z.imag:+.6g}j"
+    sign = "+" if z.imag >= 0 else "-"
+    return f"{z.real:.6g} {sign} {abs(z.imag):.6g}i"
+
+
+def _sci(x) -> str:
+    """A small number for a reader: 3.2e-25 -> $3.2 \\times 10^{-25}$, 0.221 -> 0.221."""
+    x = float(x)
+    if x == 0:
+        return "0"
+    if 1e-3 <= abs(x) < 1e4:
+        return f"{x:.3g}"
+    mant, ex = f"{x:.1e}".split("e")
+    return f"${mant} \\times 10^{{{int(ex)}}}$"
+
+
+def _at(pt) -> str:
+    from zener_sym.derivation.printing import NAMES  # noqa: PLC0415
+
+    return "$" + ", ".join(f"{NAMES.get(s.name, s.name)} = {float(v):.4g}" for s, v in pt.items()) + "$"
 
 
 # ---- units: each physical symbol as a monomial in the base dimensions M, L, Ts -----------------
@@ -203,4 +221,5 @@ def rounds_to(value, printed: str) -> tuple[bool, str]:
     ok = diff < ulp
     how = "rounds" if round(float(value), dec) == float(printed) else (
         "truncates" if ok else "does not round")
-    return ok, f"{float(value):.{dec + 3}f} {how} to {printed} (|diff| = {diff:.2g}, unit {ulp:g})"
+    return ok, (f"{float(value):.{dec + 3}f} {how} to {printed} (difference {diff:.2g}, one unit "
+                f"of the last printed digit is {ulp:g})")

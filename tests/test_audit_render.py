@@ -1,0 +1,180 @@
+"""AUDIT.md and FORMULAS.md as a reader sees them: every formula renders, nothing is cut.
+
+The rendering check has two parts, both on every math block of the committed files (display
+``$$...$$`` and inline ``$...$``, outside code):
+
+1. matplotlib's mathtext parses it (``MathTextParser("path").parse``). mathtext reads a subset of
+   LaTeX; the printer (``zener_sym.derivation.printing``) writes only that subset (no
+   ``\\begin{...}``, no ``\\middle``, ``\\frac`` for ``\\tfrac``), and GitHub's MathJax reads all
+   of it, so a block that passes renders in both.
+2. A LaTeX-syntax check that mathtext does not make: braces balance, ``\\left``/``\\right`` pair
+   up, and no SymPy or Python syntax (``**``, ``Rational(``, ``sqrt(``, ``I*``, ``Derivative(``)
+   appears, in the math or in the prose around it.
+
+A test also shows that the check fails on a broken block, so it cannot pass vacuously.
+"""
+from __future__ import annotations
+
+import re
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+mathtext = pytest.importorskip("matplotlib.mathtext")
+
+ROOT = Path(__file__).resolve().parents[1]
+FILES = ("AUDIT.md", "FORMULAS.md")
+#: SymPy or Python syntax (a LaTeX command such as \\exp( or \\sqrt is not matched).
+PYTHON_SYNTAX = (r"\*\*", r"Rational\(", r"(?<!\\)sqrt\(", r"\bI\*", r"I_\*", r"Derivative\(",
+                 r"(?<!\\)atan\(", r"\blam\*", r"omega0\*", r"(?<!\\)exp\(")
+
+
+def _strip_code(text: str) -> str:
+    text = re.sub(r"```.*?```", "", text, flags=re.S)
+    return re.sub(r"`[^`\n]*`", "", text)
+
+
+def math_blocks(text: str) -> list[str]:
+    """Display blocks ``$$...$$`` and inline ``$...$`` of a markdown text, outside code."""
+    text = _strip_code(text)
+    blocks = [b.strip() for b in re.findall(r"\$\$(.+?)\$\$", text, flags=re.S)]
+    rest = re.sub(r"\$\$(.+?)\$\$", " ", text, flags=re.S)
+    blocks += re.findall(r"\$([^$\n]+?)\$", rest)
+    if rest.count("$") % 2:
+        raise AssertionError("an odd number of $ outside display math: an unclosed inline formula")
+    return blocks
+
+
+def syntax_problems(tex: str) -> list[str]:
+    """What is wrong with one LaTeX block by the rules of the module docstring ([] if nothing)."""
+    out = []
+    depth = 0
+    for ch in re.sub(r"\\[{}]", "", tex):
+        depth += (ch == "{") - (ch == "}")
+        if depth < 0:
+            break
+    if depth != 0:
+        out.append("unbalanced braces")
+    if len(re.findall(r"\\left\b", tex)) != len(re.findall(r"\\right\b", tex)):
+        out.append("\\left and \\right do not pair up")
+    out += [f"Python syntax {s!r}" for s in PYTHON_SYNTAX if re.search(s, tex)]
+    return out
+
+
+_PARSER = mathtext.MathTextParser("path")
+
+
+def mathtext_error(tex: str) -> str:
+    """'' if matplotlib's mathtext parses ``tex``, else its error message."""
+    try:
+        _PARSER.parse("$" + " ".join(tex.split()) + "$")
+    except Exception as exc:  # mathtext raises ValueError with the parse position
+        return str(exc).splitlines()[-1] if str(exc) else type(exc).__name__
+    return ""
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_every_formula_renders(name):
+    text = (ROOT / name).read_text(encoding="utf-8")
+    blocks = math_blocks(text)
+    assert len(blocks) > 100, f"{name}: only {len(blocks)} formulas found"
+    bad = []
+    for b in blocks:
+        why = syntax_problems(b) + ([f"mathtext: {e}"] if (e := mathtext_error(b)) else [])
+        if why:
+            bad.append(f"{b[:120]!r}: {'; '.join(why)}")
+    assert not bad, f"{len(bad)} broken formulas in {name}:\n" + "\n".join(bad[:20])
+
+
+def test_the_check_fails_on_a_broken_formula():
+    good = r"\beta = \frac{\lambda}{2} \left(\lambda + \left(\frac{5}{4}\right)^{-\frac{3}{5}}\right)^{-\frac{1}{3}}"
+    assert not syntax_problems(good) and not mathtext_error(good)
+    assert syntax_problems(good[:-1])  # a brace missing
+    assert mathtext_error(r"\begin{cases} a \\ b \end{cases}")  # not mathtext: must be rewritten
+    assert syntax_problems("lam**2 + Rational(5,4)")
+    with pytest.raises(AssertionError):
+        math_blocks("an $unclosed formula")
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_no_python_syntax_cut_text_or_outside_path(name):
+    text = (ROOT / name).read_text(encoding="utf-8")
+    prose = _strip_code(text)
+    for s in PYTHON_SYNTAX:
+        assert not re.search(s, prose), f"{name} has {s!r}: {re.search(s, prose)}"
+    assert "/work/" not in text and "shared/paper" not in text and "000_0e97" not in text
+    # nothing cut: the old table cut long cells with "..." at the end
+    assert not [ln for ln in text.splitlines() if ln.rstrip(" |").endswith("...")]
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_every_link_has_its_heading(name):
+    from zener_sym.audit.markdown import slug
+
+    text = (ROOT / name).read_text(encoding="utf-8")
+    headings = [slug(h) for h in re.findall(r"^#+ (.+)$", text, flags=re.M)]
+    assert len(headings) == len(set(headings)), "two headings share an anchor"
+    targets = re.findall(r"\]\(#([^)]+)\)", text)
+    assert targets and not [t for t in targets if t not in headings]
+
+
+def test_audit_md_layout():
+    from zener_sym.audit.markdown import PAPER_TITLE
+
+    text = (ROOT / "AUDIT.md").read_text(encoding="utf-8")
+    assert PAPER_TITLE in text
+    # the summary table comes first, then one section per item, headed with its number
+    assert text.index("| item | kind | verdict | note |") < text.index("## Equations")
+    for n in (1, 24, 32, 40, 41, 81):
+        assert re.search(rf"^### \({n}\) ", text, flags=re.M), n
+    # the (24) and F_m claims: both readings of a printed bound are stated once at the top
+    assert "How a printed bound is read" in text
+    sec = text[text.index("### Claim on (51)"):]
+    sec = sec[:sec.index("\n### ", 5)]
+    assert "Read strictly" in sec and "to the printed digits" in sec
+
+
+def test_formulas_md_has_contents_and_plain_headings():
+    text = (ROOT / "FORMULAS.md").read_text(encoding="utf-8")
+    assert "## Contents" in text
+    for h in re.findall(r"^#+ (.+)$", text, flags=re.M):
+        assert not re.search(r"[$\\^]|->|_\d", h), f"heading with ASCII or LaTeX math: {h!r}"
+
+
+# ---- the printer's rules, against values computed another way -------------------------------
+def test_constant_rule_keeps_the_value():
+    from zener_sym.derivation.printing import constant_parts
+
+    q = sp.Rational(5, 4)
+    for c in (q ** sp.Rational(-3, 5), q ** sp.Rational(2, 5), q ** sp.Rational(1, 10),
+              sp.Integer(30) ** sp.Rational(2, 5) / 4, sp.Rational(71289, 62500) * q ** sp.Rational(-2, 5),
+              sp.Integer(2) ** sp.Rational(1, 5) * 3 ** sp.Rational(2, 5) / 2):
+        coeff, base, g = constant_parts(list(sp.Mul.make_args(c)))
+        back = coeff * sp.Rational(base.numerator, base.denominator) ** sp.Rational(g.numerator, g.denominator)
+        assert sp.simplify(back / c) == 1, c
+    # the paper's constants come out as the paper writes them
+    assert constant_parts(list(sp.Mul.make_args(q ** sp.Rational(-3, 5))))[1:] in (
+        (Fraction(5, 4), Fraction(-3, 5)), (Fraction(4, 5), Fraction(3, 5)))
+
+
+@pytest.mark.parametrize("expr, want", [
+    ("(lam + (5/4)**(-3/5))**(-1/3)", r"\left(\lambda + \left(\frac{5}{4}\right)^{- \frac{3}{5}}\right)^{- \frac{1}{3}}"),
+    ("lam/2*(lam + (5/4)**(-3/5))**(-1/3)",
+     r"\frac{\lambda}{2} \left(\lambda + \left(\frac{5}{4}\right)^{- \frac{3}{5}}\right)^{- \frac{1}{3}}"),
+    ("1 - nu2**2", r"1 - \nu_2^{2}"),
+    ("(5/4)**(1/10)", r"\left(\frac{5}{4}\right)^{\frac{1}{10}}"),
+    ("(ms/(4*Es*sqrt(R*V0)/3))**(2/5)", r"\left(\frac{3 m^*}{4 E^* \sqrt{R} \sqrt{V_0}}\right)^{\frac{2}{5}}"),
+    # a sum times a kept negative power: the sum keeps its brackets
+    ("(pi - 2*atan(x))*(lam + 1)**(-1/3)",
+     r"\left(\pi - 2 \arctan{\left(x \right)}\right) \left(\lambda + 1\right)^{- \frac{1}{3}}"),
+])
+def test_printer_rules(expr, want):
+    from zener_sym.derivation.printing import paper_latex
+
+    ns = {n: sp.Symbol(n, positive=True) for n in ("lam", "nu2", "ms", "Es", "R", "V0", "x", "y")}
+    e = sp.sympify(expr.replace("(5/4)", "Rational(5,4)").replace("(-3/5)", "Rational(-3,5)")
+                   .replace("(-1/3)", "Rational(-1,3)").replace("(1/10)", "Rational(1,10)")
+                   .replace("(2/5)", "Rational(2,5)"), locals=ns)
+    assert paper_latex(e) == want

@@ -131,6 +131,14 @@ def constant_parts(factors):
     return coeff, inner, g
 
 
+def _flat_mul(e) -> list:
+    """The factors of a (possibly nested, unevaluated) product, in order."""
+    out = []
+    for a in e.args:
+        out += _flat_mul(a) if a.is_Mul else [a]
+    return out
+
+
 def _negative_fraction_of_sum(f) -> bool:
     """(a + b)^{-p/q} with q > 2: printed with its negative exponent, as the paper does."""
     return bool(f.is_Pow and f.base.is_Add and f.exp.is_Rational and f.exp.is_negative
@@ -306,10 +314,12 @@ class PaperPrinter(LatexPrinter):
 
     def _print_Mul(self, expr):
         if self._literal and expr.is_Mul:
-            # a transcription: drop the 1 and -1 factors SymPy's parser leaves unevaluated
-            args = [a for a in expr.args if a != 1 and a != -1]
-            neg = sum(a == -1 for a in expr.args) % 2 == 1
-            if len(args) != len(expr.args):
+            # a transcription: flatten the products SymPy's parser nests, and drop the 1 and -1
+            # factors it leaves unevaluated (the sign goes in front)
+            flat = _flat_mul(expr)
+            args = [a for a in flat if a != 1 and a != -1]
+            neg = sum(a == -1 for a in flat) % 2 == 1
+            if len(args) != len(expr.args) or len(flat) != len(expr.args):
                 inner = args[0] if len(args) == 1 else sp.Mul(*args, evaluate=False)
                 body = self._print_factor(inner) if args else "1"
                 return ("- " if neg else "") + body

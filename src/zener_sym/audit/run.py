@@ -40,7 +40,14 @@ def _printed_text(item: Printed) -> str:
         return item.raw
     if item.parse is None:
         return _clean_raw(item.raw)
-    return _fill(_form(item.id), tex(parse(item, evaluate=False), item.id, literal=True))
+    try:
+        try:
+            shown = parse(item, evaluate=False)
+        except Exception:  # SymPy cannot keep this one unevaluated: show its evaluated form
+            shown = parse(item)
+    except Exception:  # unreadable: the check reports it; the raw text shows what was printed
+        return _clean_raw(item.raw)
+    return _fill(_form(item.id), tex(shown, item.id, literal=True))
 
 
 def _derived_text(item: Printed, der: str) -> str:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from zener_sym.derivation.printing import NAMES, paper_latex
+from zener_sym.derivation.printing import NAMES, mathtext_safe, paper_latex
 
 __all__ = ["tex", "m", "mm", "dim_tex", "sym_tex", "PLACEHOLDERS", "num"]
 
@@ -46,7 +46,10 @@ def tex(expr, item_id: str | None = None, literal: bool = False) -> str:
         return r"\left(" + ", ".join(tex(e, item_id, literal) for e in expr) + r"\right)"
     if isinstance(expr, sp.Equality):
         return f"{tex(expr.lhs, item_id, literal)} = {tex(expr.rhs, item_id, literal)}"
-    return paper_latex(sp.sympify(expr), names=names, functions=functions, literal=literal)
+    try:
+        return paper_latex(sp.sympify(expr), names=names, functions=functions, literal=literal)
+    except Exception:  # an odd (mutated) transcription must never cost a verdict
+        return mathtext_safe(sp.latex(expr))
 
 
 def m(expr, item_id: str | None = None) -> str:

@@ -333,6 +333,14 @@ class PaperPrinter(LatexPrinter):
             return super()._print_Mul(expr)
         if _coeff_isneg(expr):
             return "- " + self._print_Mul(-expr)
+        nums = [f for f in expr.args if f.is_Add]
+        dens = [f for f in expr.args if f.is_Pow and f.exp == -1 and f.base.is_Add]
+        if len(nums) == 1 and len(dens) == 1 and all(_coeff_isneg(t) for t in nums[0].args):
+            # (-a - b)/(c - d) is written (a + b)/(d - c)
+            others = [f for f in expr.args if f is not nums[0] and f is not dens[0]]
+            flipped = sp.Mul(*others, -nums[0], sp.Pow(-dens[0].base, -1, evaluate=False),
+                             evaluate=False)
+            return self._print_Mul_plain(flipped)
         factors = list(expr.args)
         numeric = [f for f in factors if _is_number_factor(f)]
         other = [f for f in factors if not _is_number_factor(f)]

@@ -166,6 +166,9 @@ def test_constant_rule_keeps_the_value():
     ("1 - nu2**2", r"1 - \nu_2^{2}"),
     ("(5/4)**(1/10)", r"\left(\frac{5}{4}\right)^{\frac{1}{10}}"),
     ("(ms/(4*Es*sqrt(R*V0)/3))**(2/5)", r"\left(\frac{3 m^*}{4 E^* \sqrt{R} \sqrt{V_0}}\right)^{\frac{2}{5}}"),
+    # all-negative numerator over a sum: both signs flipped, as a person writes eta (61)
+    ("(-2*atan(x) - pi)/(2*atan(x) - pi)",
+     r"\frac{2 \arctan{\left(x \right)} + \pi}{\pi - 2 \arctan{\left(x \right)}}"),
     # a sum times a kept negative power: the sum keeps its brackets
     ("(pi - 2*atan(x))*(lam + 1)**(-1/3)",
      r"\left(\pi - 2 \arctan{\left(x \right)}\right) \left(\lambda + 1\right)^{- \frac{1}{3}}"),

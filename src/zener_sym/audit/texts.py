@@ -16,7 +16,7 @@ __all__ = ["tex", "m", "mm", "dim_tex", "sym_tex", "PLACEHOLDERS", "num"]
 
 _DB = r"\bar\delta"
 _I_BAR = r"\bar I"
-_INT_F2 = r"\int \bar F^2\, d\tau"
+_INT_F2 = r"\left(\int \bar F^2\, d\tau\right)"  # bracketed: a factor among others
 
 #: Per item: (symbol names, function names) of the placeholders the transcription uses.
 PLACEHOLDERS: dict = {
@@ -28,7 +28,7 @@ PLACEHOLDERS: dict = {
     "41": ({"x": "C_{121}", "y": "C_{122}"}, {"C11": ("C_{123}", False), "C12": ("C_{124}", False)}),
     "51": ({}, {"C11": (r"C_{11}^d", False), "C12": (r"C_{12}^d", False)}),
     "63": ({"x": _I_BAR}, {}), "64": ({"x": _I_BAR}, {}), "69": ({"x": _I_BAR}, {}),
-    "74": ({"x": r"\int F^2\, dt"}, {}),
+    "74": ({"x": r"\left(\int F^2\, dt\right)"}, {}),
     "75": ({"x": _INT_F2}, {}), "76": ({"x": _INT_F2}, {}),
     "4": ({"dm": r"\delta_m"}, {}),
 }

@@ -288,24 +288,25 @@ def _mueller_linear():
         fm = lin["F_m"] / ex.F_m - 1
         imp = np.abs(lin["impulse"] / ex.impulse - 1)
         under = bool(np.all(fm[1:] < 0))
-        parts.append(f"{name} (kappa {kappa:.4f}, lambda <= {lams[-1]:.3g}): F_m error "
-                     f"{100 * fm.min():+.2f}% to {100 * fm.max():+.2f}%, |impulse error| "
-                     f"{100 * imp.min():.2f}% to {100 * imp.max():.2f}%")
+        parts.append(f"`{name}` ($\\kappa = {kappa:.4f}$, $\\lambda \\leq {lams[-1]:.3g}$): $\\bar F_m$ "
+                     f"error {100 * fm.min():+.2f}% to {100 * fm.max():+.2f}%, impulse error (absolute "
+                     f"value) {100 * imp.min():.2f}% to {100 * imp.max():.2f}%")
         # closeness to the quoted numbers, in log ratio of the worst F_m and impulse errors
         score = abs(np.log(-fm.min() / fm_max)) if fm.min() < 0 else np.inf
         score += abs(np.log(max(imp.max(), 1e-12) / imp_hi))
         if under and (best is None or score < best[0]):
             best = (score, name, fm.min(), imp.max())
-    verdict = (f"no stiffness reproduces the quoted errors; closest with F_m always under: "
-               f"{best[1]!r} (F_m error down to {100 * best[2]:.2f}%, impulse error at most "
-               f"{100 * best[3]:.2f}%)" if best else "no stiffness underestimates F_m everywhere")
+    verdict = (f"no stiffness reproduces the quoted errors; the closest with $\\bar F_m$ always under "
+               f"is `{best[1]}` ($\\bar F_m$ error down to {100 * best[2]:.2f}%, impulse error at most "
+               f"{100 * best[3]:.2f}%)" if best else "no stiffness underestimates $\\bar F_m$ everywhere")
     holds = best is not None and abs(-best[2] - fm_max) < 0.01 and abs(best[3] - imp_hi) < 0.01
-    return _result(holds, verdict, "linear law F = kappa delta in Eq. (10), closed forms; vs the "
-                   "exact ODE at 201 lambda in [0, 2]: " + "; ".join(parts),
+    return _result(holds, verdict, "The linear law $F = \\kappa\\bar\\delta$ in Eq. (10), in closed "
+                   "form, against the exact ODE at 201 values of $\\lambda$ in [0, 2]: "
+                   + "; ".join(parts) + ".",
                    "Mueller et al. (2015) is not available here: its stiffness is unknown, so the "
                    "natural choices were measured (docs/figures.md); the paper's reference is FEM "
                    "and its impulse error never falls to 0, while the linear law's impulse "
-                   "1 + e equals the exact 2 at lambda = 0")
+                   "$1 + e$ equals the exact 2 at $\\lambda = 0$")
 
 
 @claim("int_F2_poly")

@@ -131,7 +131,7 @@ def markdown(results) -> str:
     for r in results:
         h = heading(r)
         label = h.split(" ", 1)[0] if r.kind == "equation" else (
-            "claim " + CLAIM_TITLES.get(r.id, ("", ""))[0] if r.kind == "claim" else h)
+            ("claim " + CLAIM_TITLES.get(r.id, ("", ""))[0]).strip() if r.kind == "claim" else h)
         lines.append(f"| [{label}](#{slug(h)}) | {r.kind} | {r.verdict} | {_table_note(r)} |")
     lines.append("")
     for name, rs in groups:

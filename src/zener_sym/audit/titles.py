@@ -128,4 +128,5 @@ CLAIM_TITLES = {
     "claim:fit55": ("(55)", "the fit of the first-order tau_d"),
     "claim:xi_V0^0.2": ("(72)", "xi proportional to V_0^0.2"),
     "claim:table1_lambda_range": ("Table 1", "the range of lambda"),
+    "claim:mueller_linear": ("", "Mueller's model, its F_m and impulse errors"),
 }

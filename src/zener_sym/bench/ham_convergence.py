@@ -116,51 +116,55 @@ def c0_curves(lam=1.01, orders=None) -> dict:
 
 
 def chart(rows, curves, path, lam_curves=1.01) -> None:
-    """Four panels: squared residual and tau_d error against order (optimal c0, both
-    formulations, every lambda), and the c0-curves of the squared residual and of tau_d."""
-    from ._plot import pyplot
+    """Four panels in the package style: squared residual and tau_d error against order (both
+    formulations, every lambda, optimal and paper c0), and the c0-curves of the squared
+    residual and of tau_d."""
+    from ..plot.style import LAMBDA_COLORS, legend_outside, rc, save
 
-    plt = pyplot()
-    fig, axes = plt.subplots(2, 2, figsize=(10, 7.5))
-    colors = dict(zip(LAMBDAS, ("C0", "C1", "C2", "C3")))
-    for form, ls in (("paper", "--"), ("strained", "-")):
-        for lam in LAMBDAS:
-            for which, mk in (("optimal", "o"), ("paper", "x")):
-                sel = [r for r in rows if r["formulation"] == form and r["lam"] == lam
-                       and r["c0_kind"] == which]
-                if not sel:
-                    continue
-                M = [r["order"] for r in sel]
-                lab = f"{form}, lambda={lam:g}" if which == "optimal" else None
-                axes[0, 0].semilogy(M, [r["residual"] for r in sel], ls=ls, marker=mk,
-                                    color=colors[lam], label=lab, alpha=1.0 if which == "optimal" else 0.45)
-                axes[0, 1].semilogy(M, [abs(r["err_tau_d"]) for r in sel], ls=ls, marker=mk,
-                                    color=colors[lam], alpha=1.0 if which == "optimal" else 0.45)
-    axes[0, 0].set_title("squared residual (o: optimal c0, x: c0 = -1)", fontsize=9)
-    axes[0, 1].set_title("|relative error of tau_d| against exact", fontsize=9)
-    for ax in axes[0]:
-        ax.set_xlabel("order M")
-        ax.grid(alpha=0.3)
-    axes[0, 0].legend(fontsize=6, ncol=2)
-    for (form, M), (c, res, td, e) in curves.items():
-        ls = "--" if form == "paper" else "-"
-        axes[1, 0].semilogy(c, res, ls=ls, label=f"{form} M={M}")
-        axes[1, 1].plot(c, td, ls=ls, label=f"{form} M={M}")
-    tdx = summary(lam_curves, model="exact").tau_d
-    axes[1, 1].axhline(tdx, color="k", lw=0.8, label="exact")
-    axes[1, 0].set_title(f"c0-curve of the squared residual, lambda = {lam_curves:g}", fontsize=9)
-    axes[1, 1].set_title(f"c0-curve of tau_d, lambda = {lam_curves:g}", fontsize=9)
-    axes[1, 1].set_ylim(tdx * 0.9, tdx * 1.1)
-    for ax in axes[1]:
-        ax.set_xlabel("c0")
-        ax.axvline(-1.0, color="gray", lw=0.6)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=6)
-    fig.suptitle("HAM series of Zener's equation: paper's homotopy (dashed) and strained time (solid)",
-                 fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.97))
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    dashes = {"paper": "--", "strained": "-"}
+    with rc() as plt:
+        fig, axes = plt.subplots(2, 2, figsize=(7.2, 6.2))
+        for form in ("paper", "strained"):
+            for lam in LAMBDAS:
+                for which, mk in (("optimal", "o"), ("paper", "x")):
+                    sel = [r for r in rows if r["formulation"] == form and r["lam"] == lam
+                           and r["c0_kind"] == which]
+                    if not sel:
+                        continue
+                    M = [r["order"] for r in sel]
+                    kw = dict(ls=dashes[form], marker=mk, color=LAMBDA_COLORS[lam],
+                              alpha=1.0 if which == "optimal" else 0.45)
+                    lab = rf"{form}, $\lambda = {lam:g}$" if which == "optimal" else None
+                    axes[0, 0].semilogy(M, [r["residual"] for r in sel], label=lab, **kw)
+                    axes[0, 1].semilogy(M, [abs(r["err_tau_d"]) for r in sel], **kw)
+        axes[0, 0].set_ylabel(r"squared residual $E_M$")
+        axes[0, 1].set_ylabel(r"$|\tau_d - \tau_{d,\rm exact}|\,/\,\tau_{d,\rm exact}$")
+        for ax in axes[0]:
+            ax.set_xlabel(r"order $M$")
+        axes[0, 0].set_title(r"o: optimal $c_0$, x: $c_0 = -1$")
+        shades = {1: 0.35, 2: 0.55, 3: 0.75, 4: 1.0}
+        for (form, M), (c, res, td, e) in curves.items():
+            kw = dict(ls=dashes[form], color=LAMBDA_COLORS[lam_curves] if form == "paper"
+                      else "#332288", alpha=shades.get(M, 1.0), label=f"{form}, $M = {M}$")
+            axes[1, 0].semilogy(c, res, **kw)
+            axes[1, 1].plot(c, td, **kw)
+        tdx = summary(lam_curves, model="exact").tau_d
+        axes[1, 1].axhline(tdx, color="#000000", lw=0.8, label="exact")
+        axes[1, 0].set_ylabel(rf"squared residual, $\lambda = {lam_curves:g}$")
+        axes[1, 1].set_ylabel(rf"$\tau_d$, $\lambda = {lam_curves:g}$")
+        axes[1, 1].set_ylim(tdx * 0.9, tdx * 1.1)
+        for ax in axes[1]:
+            ax.set_xlabel(r"$c_0$")
+            ax.axvline(-1.0, color="#7F7F7F", lw=0.6)
+        top = axes[0, 0].get_legend_handles_labels()
+        axes[0, 0].legend(*top, loc="upper left", bbox_to_anchor=(0.0, -0.2), ncol=2,
+                          frameon=False)
+        legend_outside(axes[1, 1], where="right")
+        fig.suptitle("HAM series of Zener's equation: the paper's homotopy (dashed) and "
+                     "strained time (solid)")
+        fig.tight_layout()
+        fig.savefig(path, dpi=150, metadata={"Software": None}, bbox_inches="tight")
+        plt.close(fig)
 
 
 def _splice(md: str, table: str) -> str:

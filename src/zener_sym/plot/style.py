@@ -14,6 +14,7 @@ import zlib
 from contextlib import contextmanager
 
 __all__ = ["pyplot", "rc", "style_for", "label", "LABELS", "MODEL_STYLES", "METHOD_STYLES",
+           "LAMBDA_COLORS",
            "COLUMN_WIDTH", "PAGE_WIDTH", "legend_outside", "save", "ERROR_LABEL", "error_label"]
 
 #: Figure widths in inches: one journal column, the full page.
@@ -41,6 +42,11 @@ MODEL_STYLES = {
     # not a model: the small-lambda form of the loss, Eq. (77), drawn in Fig. 14
     "fit77": (_OI["teal"], "d", (0, (1, 2)), "Eq. (77), small $\\lambda$"),
 }
+
+#: The lambda values of the paper's Figs. 5, 10, 11 -> colour, for charts whose curves are
+#: lambda values rather than models (the convergence study).
+LAMBDA_COLORS = {0.11: _OI["sky"], 1.01: _OI["orange"], 1.51: _OI["green"],
+                 1.99: _OI["vermillion"]}
 
 #: Integrator (solve_ivp method) -> (colour, marker) for the benchmark's solver families.
 METHOD_STYLES = {

@@ -87,3 +87,79 @@ def test_contact_end_bad_input():
         zs.summary(1.0, model="exact", contact_end="force", backend="table")
     with pytest.raises(ValueError, match="outside the validity"):
         zs.summary(1500.0, model="exact", contact_end="force")
+
+
+def test_viscoelastic_lambda_closed_form_and_bad_input():
+    # lambda = A/T with T from the mapping, computed here from its definition
+    A, rho, m, v = 2e-7, 3.1e8, 4e-6, 2.5
+    T = (m / rho) ** 0.4 * v ** -0.2
+    assert abs(zs.viscoelastic_lambda(A, rho, m, v) - A / T) < 1e-15 * A / T
+    arr = zs.viscoelastic_lambda([A, 2 * A], rho, m, v)
+    assert arr.shape == (2,) and abs(arr[1] / arr[0] - 2) < 1e-15
+    for kw in ({"A": 0.0}, {"rho": -1.0}, {"m_eff": float("inf")}, {"v0": float("nan")}):
+        args = {"A": A, "rho": rho, "m_eff": m, "v0": v, **kw}
+        name = next(iter(kw))
+        with pytest.raises(ValueError, match=f"^{name} .*allowed: 0 < {name}"):
+            zs.viscoelastic_lambda(**args)
+
+
+def _si_integration(m, rho, A, v0, end):
+    """The grain ODE in SI units, integrated directly (an independent route to grain_impact)."""
+    from scipy.integrate import solve_ivp
+
+    def rhs(t, y):
+        x, u = max(y[0], 0.0), y[1]
+        return [u, -rho * (x**1.5 + 1.5 * A * np.sqrt(x) * u) / m]
+
+    def stop(t, y):
+        x = max(y[0], 0.0)
+        return x + 1.5 * A * y[1] if end == "force" else y[0]
+
+    stop.terminal, stop.direction = True, -1
+
+    def peak(t, y):  # d/dt of the force (force criterion) or of xi (plate criterion)
+        x = max(y[0], 1e-300)
+        u = y[1]
+        if end == "delta":
+            return u
+        acc = -rho * (x**1.5 + 1.5 * A * np.sqrt(x) * u) / m
+        return 1.5 * np.sqrt(x) * u + 1.5 * A * (0.5 * u * u / np.sqrt(x) + np.sqrt(x) * acc)
+
+    peak.direction = -1
+    t_guess = 10 * (m / rho) ** 0.4 * v0 ** -0.2
+    # start a hair after contact (xi ~ v0 t), where the square root is already resolved
+    t0 = 1e-9 * t_guess
+    s = solve_ivp(rhs, (t0, t_guess), [v0 * t0, v0 - rho * 1.5 * A * np.sqrt(v0 * t0) * t0 / m],
+                  method="DOP853", rtol=1e-12, atol=1e-20, events=[stop, peak])
+    te, ye = s.t_events[0][0], s.y_events[0][0]
+    tp, yp = s.t_events[1][0], s.y_events[1][0]
+    Fp = rho * (yp[0] ** 1.5 + (1.5 * A * np.sqrt(yp[0]) * yp[1] if end == "force" else 0.0))
+    return -ye[1] / v0, te, Fp
+
+
+@pytest.mark.parametrize("end", ["force", "delta"])
+def test_grain_impact_against_si_integration(end):
+    m1, m2 = 2e-5, 5e-5
+    r = zs.grain_impact(1e-3, m1, "glass", 3e-7, 2.0, R2=2e-3, m2=m2, material2="steel", contact_end=end)
+    assert r.contact_end == end and ("force" in r.criterion) == (end == "force")
+    e, tc, Fm = _si_integration(r.m_eff, r.rho, 3e-7, 2.0, end)
+    assert abs(r.e - e) < 1e-6 * e
+    assert abs(r.contact_time - tc) < 1e-6 * tc
+    assert abs(r.max_force - Fm) < 1e-6 * Fm
+    assert r.t[-1] == pytest.approx(r.contact_time) and r.force.shape == r.t.shape
+
+
+def test_grain_impact_wall_and_bad_input():
+    rigid = zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0)
+    soft = zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, wall="glass")
+    assert rigid.E_star > soft.E_star and rigid.contact_time < soft.contact_time
+    with pytest.raises(ValueError, match="A .*allowed: 0 < A"):
+        zs.grain_impact(1e-3, 1e-5, "glass", -1e-7, 1.0)
+    with pytest.raises(ValueError, match="v0 .*allowed"):
+        zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, float("inf"))
+    with pytest.raises(ValueError, match="contact_end"):
+        zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, contact_end="zero")
+    with pytest.raises(ValueError, match="sphere 2 needs"):
+        zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, R2=1e-3)
+    with pytest.raises(ValueError, match="exact model accepts 0 <= lambda <= 1000"):
+        zs.grain_impact(1e-3, 1e-5, "glass", 1.0, 1.0)

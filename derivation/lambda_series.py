@@ -42,11 +42,12 @@ duration O(lambda^(-5/3)) in s, then follows the slow manifold P^(3/2) = W q(W^(
 
 which in this 2-D autonomous system is one trajectory, attracting at a rate ~ W^(1/3). So
 
-    e lambda^5 -> K_delta,   tau_d = lambda (5 ln lambda + C_delta) + o(lambda)   (plate's end)
+    e lambda^5 -> K_delta,   tau_d = lambda (5 ln lambda + C_delta) + 3 lambda^(-2/3) + O(lambda^(-7/3))
 
 with exponentially small corrections to e lambda^5 (K_delta is the end velocity of the manifold
 trajectory; K_delta and C_delta come from integrating it from W_s, started on the truncated
-manifold series, at two W_s and two truncations). delta_m lambda^(2/3) -> 1 and F_m lambda -> 1
+manifold series, at two W_s and two truncations; the 3 is 2 from the manifold's time correction
+and 1 from the initial layer, where W lags the manifold by W0^(2/3) int p' dsigma = W0^(2/3)). delta_m lambda^(2/3) -> 1 and F_m lambda -> 1
 on the plate (F = delta^(3/2)): the compression ends in the initial layer delta = lambda^(-2/3) D,
 D' = 1 - D^(3/2).
 
@@ -518,7 +519,32 @@ def _derive(ctx, K, large):
         ctx.check("L", "grains: e lambda^(5/3) -> 2/3 (e = delta/(3/2 lambda) at the force-free end, which follows "
                   "the end of compression, delta_m lambda^(2/3) -> 1)", "this module's integrator from the start, "
                   "lambda = 100, 1000", grains_large)
-        ctx.expr["large"] = dict(a, e_force_lim=sp.Rational(2, 3), delta_m_lim=sp.Integer(1))
+        def plate_from_start():
+            # e lambda^5 = K_delta up to exponentially small terms, and
+            # tau_d = lambda (5 ln lambda + C_delta) + 3 lambda^(-2/3) + O(lambda^(-7/3)): the 3 is
+            # 2 from the manifold's own time, -3 g_1 z with 1/q = 1 - (2/3) z + ..., plus 1 from the
+            # initial layer, where W lags the manifold by W0^(2/3) int (1 - p^(3/2)) dsigma =
+            # W0^(2/3) int p' dsigma = W0^(2/3) (p(inf) - p(0)) = W0^(2/3).
+            rows, ok, prev = [], True, None
+            with mpmath.workdps(25):
+                for lam in (10, 30):
+                    r = physical_point(lam, force=False, dps=20)
+                    L = mpmath.mpf(lam)
+                    ek = r["e_delta"] * L**5 / a["K_delta"] - 1
+                    corr = (r["tau_d_delta"] - L * (5 * mpmath.log(L) + a["C_delta"])) * L ** (mpmath.mpf(2) / 3)
+                    nxt = (corr - 3) * L ** (mpmath.mpf(5) / 3)  # the next term's coefficient
+                    ok &= abs(ek) < 1e-15 and abs(corr - 3) < 2 * L ** (-mpmath.mpf(5) / 3)
+                    if prev is not None:
+                        ok &= abs(nxt / prev - 1) < 0.05  # the remainder scales as lambda^(-7/3)
+                    prev = nxt
+                    rows.append(f"lambda = {lam}: e lambda^5/K - 1 = {mpmath.nstr(ek, 3)}, "
+                                f"(tau_d - lambda (5 ln lambda + C)) lambda^(2/3) = {mpmath.nstr(corr, 10)}")
+            return ok, "; ".join(rows)
+
+        ctx.check("L", "plate from the start: e lambda^5 = K_delta (exponentially small remainder), "
+                  "tau_d = lambda (5 ln lambda + C_delta) + 3 lambda^(-2/3) + O(lambda^(-7/3))",
+                  "this module's integrator from the start at lambda = 10, 30 (20 digits)", plate_from_start)
+        ctx.expr["large"] = dict(a, tau_d_corr=sp.Integer(3), e_force_lim=sp.Rational(2, 3), delta_m_lim=sp.Integer(1))
     Dd = sp.Symbol("D", positive=True)
     fpk = sp.Rational(3, 2) * sp.sqrt(Dd) * (1 - Dd ** sp.Rational(3, 2))
     crit = [r for r in sp.solve(sp.diff(fpk, Dd), Dd) if r.is_positive]

@@ -163,3 +163,42 @@ def test_grain_impact_wall_and_bad_input():
         zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, R2=1e-3)
     with pytest.raises(ValueError, match="exact model accepts 0 <= lambda <= 1000"):
         zs.grain_impact(1e-3, 1e-5, "glass", 1.0, 1.0)
+
+
+def test_lookup_table_csv_round_trip_against_solvers(capsys):
+    from zener_sym.cli import main
+    from zener_sym.exact import mp as exact_mp
+
+    assert main(["table", "--quantity", "e,tau_d", "--lam", "0:5:11", "--contact-end", "force",
+                 "--csv"]) == 0
+    text = capsys.readouterr().out
+    lines = text.splitlines()
+    assert lines[0] == "lam,e,tau_d" and len(lines) == 12
+    arr = np.loadtxt(text.splitlines()[1:], delimiter=",")
+    assert np.array_equal(arr[:, 0], np.linspace(0.0, 5.0, 11))
+    for row in arr[[2, 5, 10]]:  # lambda = 1, 2.5, 5 against the mpmath force-free end
+        s = fe.solve_mp(row[0], dps=25)
+        assert abs(row[1] - float(s.e)) < 1e-11 * float(s.e)
+        assert abs(row[2] - float(s.tau_d)) < 1e-11 * float(s.tau_d)
+    from zener_sym.scene.lookup import lookup_csv, lookup_table
+
+    t = lookup_table(("tau_d", "e"), [1.0], contact_end="delta")
+    s = exact_mp.solve(1.0, dps=25)
+    assert list(t) == ["lam", "tau_d", "e"] and abs(t["e"][0] - float(s.e)) < 1e-11 * float(s.e)
+    assert lookup_csv(t).splitlines()[0] == "lam,tau_d,e"
+
+
+def test_lookup_table_bad_input(capsys):
+    from zener_sym.cli import main
+    from zener_sym.scene.lookup import lookup_table
+
+    with pytest.raises(ValueError, match="unknown quantity 'speed'.*allowed: delta_m"):
+        lookup_table("e,speed", "0:1:3")
+    with pytest.raises(ValueError, match="not understood; allowed: 'start:stop:n'"):
+        lookup_table("e", "1:0:3")
+    with pytest.raises(ValueError, match="allowed 0 <= lambda < 1000"):
+        lookup_table("e", "0:2000:3")
+    with pytest.raises(ValueError, match="contact_end"):
+        lookup_table("e", "0:1:3", contact_end="zero")
+    assert main(["table", "--lam", "0:1"]) == 2
+    assert "not understood" in capsys.readouterr().err

@@ -98,21 +98,20 @@ class SeriesModel(Model):
                              f"rtol={rtol:g} with contact_end={end!r}: allowed {where}; use model "
                              f"'exact' there")
         C = coefficients()
-        one_minus_e = np.empty(lam.shape)
-        tau_d = np.empty(lam.shape)
+        e, xi, tau_d = (np.empty(lam.shape) for _ in range(3))
         if small.any():
             x = lam[small] if end == "delta" else np.sqrt(lam[small])
             ce, ct = C["small"][f"e_{end}"], C["small"][f"tau_d_{end}"]
-            one_minus_e[small] = -_poly(ce, x)
+            d = _poly(ce, x)  # e - 1, kept apart so that xi = 1 - e^2 = -d (2 + d) does not cancel
+            e[small], xi[small] = 1.0 + d, -d * (2.0 + d)
             tau_d[small] = ct[0] + _poly(ct, x)
         if large.any():
             x = lam[large]
             L = C["large"]
-            one_minus_e[large] = 1.0 - L["K_delta"] * x**-5.0
+            e[large] = L["K_delta"] * x**-5.0
+            xi[large] = 1.0 - e[large] ** 2
             tau_d[large] = x * (5.0 * np.log(x) + L["C_delta"]) + L["tau_d_corr"] * x ** (-2.0 / 3.0)
-        e = 1.0 - one_minus_e
-        return {"lam": lam.copy(), "e": e, "tau_d": tau_d, "impulse": 1.0 + e,
-                "xi": one_minus_e * (1.0 + e)}
+        return {"lam": lam.copy(), "e": e, "tau_d": tau_d, "impulse": 1.0 + e, "xi": xi}
 
 
 register(SeriesModel())

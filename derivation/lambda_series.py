@@ -17,7 +17,8 @@ first order and the Hertz quadrature tau(delta) along delta_0' = sqrt(1 - (4/5) 
 The force-free end lies at u = mu sqrt(-(3/2) delta'(u)) with mu = sqrt(lambda): it is analytic in
 mu, not lambda, so the grains' series runs in powers of lambda^(1/2) (the v^(1/10) of the granular
 literature). The two ends differ first at order lambda^(5/2): between them the attractive force is
-O(lambda^(3/2)) for a time O(lambda).
+O(lambda^(3/2)) for a time O(lambda), and its impulse gives e_force - e_delta = (4/15) (3 lambda/2)^(5/2)
++ ..., i.e. a5 = (3/5) sqrt(3/2).
 
 The coefficients of the hierarchy are computed numerically, to 50 digits, as the Taylor
 coefficients of these analytic functions, by two routes that share only the Taylor integrator of
@@ -71,7 +72,7 @@ import sympy as sp
 
 from .steps import Context
 
-__all__ = ["derive", "raman_c1", "small_lambda_coefficients", "large_lambda_constants",
+__all__ = ["derive", "raman_c1", "grain_a5", "small_lambda_coefficients", "large_lambda_constants",
            "manifold_series", "solve_point", "main"]
 
 DPS = 50  # working digits of the coefficient routes
@@ -321,6 +322,12 @@ def raman_c1():
     return sp.Rational(4, 5) * sp.Rational(5, 4) ** sp.Rational(8, 5) * sp.gamma(sp.Rational(8, 5)) * sp.sqrt(sp.pi) / sp.gamma(sp.Rational(21, 10))
 
 
+def grain_a5():
+    """The first coefficient where the grains' end differs from the plate's: e_force - e_delta =
+    a5 lambda^(5/2) + ..., a5 = (4/15) (3/2)^(5/2) = (3/5) sqrt(3/2), a SymPy number."""
+    return sp.Rational(3, 5) * sp.sqrt(sp.Rational(3, 2))
+
+
 # --- large lambda ------------------------------------------------------------------------
 
 def _fr_mul(a, b, K):
@@ -492,8 +499,25 @@ def _derive(ctx, K, large):
                        and all(abs(co["e_force"][2 * j] - co["e_delta"][j]) < 1e-35 for j in (0, 1, 2))
                        and abs(co["e_force"][5]) > 1e-3,
                        f"lambda^(5/2) coefficient {mpmath.nstr(co['e_force'][5], 20)}"))
+
+    def a5_closed():
+        # Between the force-free point (delta = (3/2) lambda |v|) and delta = 0 the plate's contact
+        # still acts with F_c = sqrt(delta) (delta - (3/2) lambda) (v = -1, dtau = d delta at
+        # leading order); the grains skip that impulse, so e_force - e_delta = its integral.
+        d, lam = sp.symbols("delta lambda", positive=True)
+        k = sp.Rational(3, 2) * lam
+        dv = sp.integrate(sp.sqrt(d) * (k - d), (d, 0, k))
+        closed = sp.Rational(4, 15) * k ** sp.Rational(5, 2)
+        ok_sym = sp.simplify(dv - closed) == 0
+        a5 = mpmath.mpf(str(sp.N(grain_a5(), 60)))
+        return ok_sym and abs(co["e_force"][5] - a5) < 1e-35, (
+            f"integral = {dv}; a5 = (3/5) sqrt(3/2) = {mpmath.nstr(a5, 20)}, hierarchy {mpmath.nstr(co['e_force'][5], 20)}")
+
+    ctx.check("S", "force-free end: e_force - e_delta = (4/15) (3 lambda/2)^(5/2) + ..., the impulse of the "
+              "attractive tail the grains skip", "SymPy integrate; route 1 at 50 digits", a5_closed)
     ctx.expr["small"] = small
     ctx.expr["raman_c1"] = c1
+    ctx.expr["grain_a5"] = grain_a5()
 
     if large:
         a = large_lambda_constants(mpmath.mpf(10) ** 6, 24)

@@ -202,3 +202,28 @@ def test_lookup_table_bad_input(capsys):
         lookup_table("e", "0:1:3", contact_end="zero")
     assert main(["table", "--lam", "0:1"]) == 2
     assert "not understood" in capsys.readouterr().err
+
+
+def test_peers_table_in_docs_is_fresh():
+    """docs/viscoelastic.md's peers block is what zener_sym.report.peers measures now
+    (regenerate: python -m zener_sym.report.peers --write docs/viscoelastic.md)."""
+    import pathlib
+
+    from zener_sym.report import peers
+
+    doc = (pathlib.Path(__file__).resolve().parents[1] / "docs" / "viscoelastic.md").read_text("utf-8")
+    fresh = peers.update_doc(doc, peers.markdown())
+    assert fresh == doc, "docs/viscoelastic.md peers table is stale"
+
+
+def test_toolbox_first_order_constant_is_raman_c1():
+    # The toolbox's C0 (Chatterjee, James & Brogliato, a Beta-function closed form of their own)
+    # read back from its recorded output, against this package's c1.
+    from zener_sym.derivation.lambda_series import raman_c1
+    from zener_sym.report import peers
+
+    rows = peers._toolbox_rows()
+    C0 = (1 - rows["ord1"][:5]) / rows["lam"][:5]
+    assert np.allclose(C0, float(raman_c1()), rtol=1e-14, atol=0)
+    # and the literature's x = 1.5 lambda: C1 = 1.15344 is c1 / 1.5 to its printed digits
+    assert abs(1.15344 * 1.5 / float(raman_c1()) - 1) < 1e-5

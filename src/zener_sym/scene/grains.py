@@ -103,15 +103,16 @@ class GrainImpact:
     contact_time : float
         Duration of the contact [s].
     max_force : float
-        Peak contact force [N] (the viscoelastic force rho (xi^{3/2} + A (xi^{3/2})') with
-        ``"force"``; the Hertz force rho xi^{3/2} with ``"delta"``).
+        Peak of the viscoelastic contact force rho (xi^{3/2} + A (xi^{3/2})') [N]; it comes
+        before the end of compression, so it is the same for both criteria.
     max_compression : float
         Largest mutual compression xi [m].
     T, m_eff, rho, R_eff, E_star : float
         Time scale [s], effective mass [kg], Hertz constant [N/m^{3/2}], effective radius [m],
         effective modulus [Pa].
     t, force : numpy.ndarray
-        Force history [s], [N] at ``n_history`` times from 0 to the end of contact.
+        History of the viscoelastic contact force [s], [N] at ``n_history`` times from 0 to the
+        end of contact (with ``"delta"`` it turns negative, attractive, before the end).
     """
 
     lam: float
@@ -204,10 +205,18 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
                          f"0 <= lambda <= {LAMBDA_MAX:g}")
     T = (m_eff / rho) ** 0.4 * v0 ** -0.2
     s = summary(lam, model="exact", contact_end=contact_end)
+    # the grains' force F_c peaks before the end of compression: F_m of the force-free reading
+    F_m = s.F_m if contact_end == "force" else summary(lam, model="exact", contact_end="force").F_m
     tau = np.linspace(0.0, s.tau_d, n_history)
     h = history(lam, tau, model="exact", contact_end=contact_end)
+    if contact_end == "force":
+        fc = np.asarray(h.force)
+    else:  # the plate reading's history gives delta and w = 1 - int delta^{3/2}; F_c from them
+        d = np.asarray(h.delta)
+        v = np.asarray(h.velocity) - lam * d**1.5
+        fc = np.sqrt(d) * (d + 1.5 * lam * v)
     F_scale = m_eff * v0 / T
     return GrainImpact(lam=lam, contact_end=contact_end, criterion=_CRITERIA[contact_end], e=s.e,
-                       contact_time=T * s.tau_d, max_force=F_scale * s.F_m,
+                       contact_time=T * s.tau_d, max_force=F_scale * F_m,
                        max_compression=v0 * T * s.delta_m, T=T, m_eff=m_eff, rho=rho, R_eff=R_eff,
-                       E_star=E_star, t=T * tau, force=F_scale * np.asarray(h.force))
+                       E_star=E_star, t=T * tau, force=F_scale * fc)

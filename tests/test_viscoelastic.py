@@ -199,7 +199,7 @@ def test_lookup_table_bad_input(capsys):
         lookup_table("e,speed", "0:1:3")
     with pytest.raises(ValueError, match="not understood; allowed: 'start:stop:n'"):
         lookup_table("e", "1:0:3")
-    with pytest.raises(ValueError, match="allowed 0 <= lambda < 1000"):
+    with pytest.raises(ValueError, match="allowed 0 <= lambda <=? 1000"):
         lookup_table("e", "0:2000:3")
     with pytest.raises(ValueError, match="contact_end"):
         lookup_table("e", "0:1:3", contact_end="zero")

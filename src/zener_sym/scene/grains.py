@@ -27,6 +27,7 @@ xi = 0 (the plate's criterion of Zener's problem). The result says which it used
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -34,9 +35,22 @@ import numpy as np
 from ..api import history, summary
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
-from .materials import Material, check_positive, get_material
+from .materials import Material, get_material
+from .units import si_value
 
 __all__ = ["viscoelastic_lambda", "GrainImpact", "grain_impact"]
+
+
+def _positive(value, field: str, unit: str, what: str) -> float:
+    """``value`` as a float if it is a finite real > 0; ValueError naming ``field`` otherwise."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{field} ({what}) must be a real number in {unit}, got {value!r}; "
+                         f"allowed: 0 < {field} < infinity")
+    v = float(value)
+    if not math.isfinite(v) or v <= 0.0:
+        raise ValueError(f"{field} ({what}) must be finite and > 0 (in {unit}), got {value!r}; "
+                         f"allowed: 0 < {field} < infinity")
+    return v
 
 
 def _pos_array(value, name, unit, what):
@@ -143,14 +157,14 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
     Parameters
     ----------
     R1, m1 : float
-        Radius [m] and mass [kg] of sphere 1.
+        Radius [m] (or a string with a unit, e.g. ``"1 mm"``) and mass [kg] of sphere 1.
     material1 : Material or str
         Its elastic constants (``zener_sym.Material`` or a preset name; the density is not used,
         the mass is given).
     A : float
         Dissipative constant of the contact [s] (module docstring).
     v0 : float
-        Normal relative impact speed [m/s].
+        Normal relative impact speed [m/s] (or a string with a unit).
     R2, m2, material2 : optional
         Sphere 2. Leave all three out for a wall.
     wall : Material or str, optional
@@ -172,10 +186,10 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
         material, a half-given sphere 2, or a lambda outside the exact model's range.
     """
     contact_end = check_contact_end(contact_end)
-    R1 = check_positive(R1, "R1", "m", "radius of sphere 1")
-    m1 = check_positive(m1, "m1", "kg", "mass of sphere 1")
-    A = check_positive(A, "A", "s", "dissipative constant")
-    v0 = check_positive(v0, "v0", "m/s", "impact speed")
+    R1 = si_value(R1, "length", "R1")
+    m1 = _positive(m1, "m1", "kg", "mass of sphere 1")
+    A = _positive(A, "A", "s", "dissipative constant")
+    v0 = si_value(v0, "speed", "v0")
     mat1 = get_material(material1)
     if isinstance(n_history, bool) or not isinstance(n_history, int) or n_history < 2:
         raise ValueError(f"n_history must be an int >= 2, got {n_history!r}")
@@ -186,8 +200,8 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
         raise ValueError("give either sphere 2 (R2, m2, material2) or wall=, not both")
     inv_E = (1 - mat1.nu**2) / mat1.E
     if all(given):
-        R2 = check_positive(R2, "R2", "m", "radius of sphere 2")
-        m2 = check_positive(m2, "m2", "kg", "mass of sphere 2")
+        R2 = si_value(R2, "length", "R2")
+        m2 = _positive(m2, "m2", "kg", "mass of sphere 2")
         mat2 = get_material(material2)
         inv_E += (1 - mat2.nu**2) / mat2.E
         R_eff, m_eff = R1 * R2 / (R1 + R2), m1 * m2 / (m1 + m2)

@@ -144,3 +144,12 @@ def test_derivation_passes_and_committed_coefficients_are_fresh():
 
         diff = "".join(difflib.unified_diff(committed.splitlines(True), fresh.splitlines(True), "committed", "fresh", n=1))
         pytest.fail("data/lambda_series.json is stale:\n" + diff[:3000])
+
+
+def test_raman_c1_agrees_with_the_linear_derivation():
+    # derivation/linear.py derives the same slope from int F_Hertz^2 on its own route
+    import sympy as sp
+
+    from zener_sym.derivation import linear
+
+    assert sp.simplify(sp.gammasimp(linear.RAMAN_C1 - ls.raman_c1())) == 0

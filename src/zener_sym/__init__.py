@@ -9,6 +9,7 @@ and numeric kernels generated from that derivation.
 from .api import History, Summary, history, summary
 from .models import REGISTRY, FieldUnavailableError
 from .scene.checks import ZenerWarning
+from .scene.grains import GrainImpact, grain_impact, viscoelastic_lambda
 from .scene.materials import ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TABLE1_SPHERE, Material
 from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
@@ -27,4 +28,5 @@ def __getattr__(name):
 __all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError",
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
            "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
-           "compare", "Comparison", "__version__"]
+           "compare", "Comparison", "__version__",
+           "viscoelastic_lambda", "grain_impact", "GrainImpact"]

@@ -99,7 +99,7 @@ def _registry_model(name: str, **options) -> Method:
 
         lams = np.asarray(lams, dtype=float)
         # a model valid only below some lambda is measured where it is valid; NaN elsewhere
-        ok = lams < model.lam_bound if model.lam_bound is not None else np.ones(lams.shape, bool)
+        ok = model.valid(lams)
         s = zs.summary(lams[ok], model=name, **options)
         out = {}
         for q in QUANTITIES:

@@ -7,6 +7,7 @@ from . import ham_series  # noqa: F401  (registers "ham": any order, Liao's c0)
 from . import pulses  # noqa: F401  (registers "hertz", "hunter", "reed", "oneway")
 from . import linear  # noqa: F401  (registers "linear", "raman")
 from . import fits  # noqa: F401  (registers "fits")
+from . import series  # noqa: F401  (registers "series")
 
 __all__ = ["Model", "REGISTRY", "register", "get_model", "SUMMARY_FIELDS", "HISTORY_FIELDS",
            "FieldUnavailableError"]

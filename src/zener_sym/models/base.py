@@ -51,6 +51,13 @@ class Model:
                 f"{', '.join(self.options) or 'none'}"
             )
 
+    def valid(self, lam: np.ndarray) -> np.ndarray:
+        """Mask of the lambdas at which the model answers with its default options (below
+        ``lam_bound``); harnesses that measure every model over a grid use it. A model valid on
+        a set that is not an interval from 0 overrides it."""
+        lam = np.asarray(lam, dtype=float)
+        return np.ones(lam.shape, bool) if self.lam_bound is None else lam < self.lam_bound
+
     def _summary(self, lam: np.ndarray, **options) -> dict:  # pragma: no cover - interface
         raise self.unavailable("summary")
 

@@ -13,11 +13,18 @@ high precision (mpmath).
     direct integration for every lambda (``rtol``, ``method`` as in ``exact.solve``).
 ``"mpmath"``
     high-precision integration (``dps``).
+
+``contact_end``: ``"delta"`` (default, the plate: contact ends at delta = 0) or ``"force"`` (the
+viscoelastic-grain reading of Eq. (10): contact ends where delta^{3/2} + lambda (delta^{3/2})'
+vanishes; the force, impulse, F_m and int_F2 are then those of the grain contact, see
+:mod:`zener_sym.exact.force_end`). ``"force"`` has no tables: ``backend="auto"`` integrates with
+scipy, ``"table"`` is refused.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from ..exact import force_end as _force
 from ..exact import solver as _exact
 from ..exact import table as _fast
 from .base import Model, register
@@ -34,12 +41,21 @@ class ExactModel(Model):
     history_fields = ("delta", "velocity", "force", "impulse")
     lam_bound = np.nextafter(_exact.LAMBDA_MAX, np.inf)
     bound_reason = "the range over which the integrator is tested"
-    options = ("rtol", "method", "backend", "dps")
+    options = ("rtol", "method", "backend", "dps", "contact_end")
 
     def _split(self, lam, options):
         """Mask of lambda to take from the tables, and the options left for integration."""
         options = dict(options)
         backend = options.pop("backend", "auto")
+        end = _force.check_contact_end(options.get("contact_end", "delta"))
+        if end == "force":
+            if backend == "table":
+                raise ValueError("contact_end='force' has no tables; use backend='auto' or 'scipy' "
+                                 "(integration) or 'mpmath'")
+            if backend == "auto":
+                backend = "scipy"
+        else:
+            options.pop("contact_end", None)
         if backend not in BACKENDS:
             raise ValueError(f"unknown backend {backend!r} for model 'exact'; allowed: "
                              f"{', '.join(BACKENDS)}")
@@ -62,16 +78,20 @@ class ExactModel(Model):
         return np.zeros(lam.shape, bool), (backend, options)
 
     def _solutions(self, lam_values, backend, options):
+        options = dict(options)
+        force = options.pop("contact_end", "delta") == "force"
         if backend == "scipy":
             if "dps" in options:
                 raise ValueError("option 'dps' goes with backend='mpmath'")
-            return {float(x): _exact.solve(x, **options) for x in np.unique(lam_values)}
+            solve = _force.solve if force else _exact.solve
+            return {float(x): solve(x, **options) for x in np.unique(lam_values)}
         from ..exact import mp as exact_mp
 
         bad = set(options) - {"dps"}
         if bad:
             raise ValueError(f"option {sorted(bad)[0]!r} does not go with backend='mpmath'")
-        return {float(x): exact_mp.solve(x, **options) for x in np.unique(lam_values)}
+        solve = _force.solve_mp if force else exact_mp.solve
+        return {float(x): solve(x, **options) for x in np.unique(lam_values)}
 
     def _summary(self, lam, **options):
         fast, rest = self._split(lam, options)

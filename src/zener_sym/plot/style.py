@@ -39,6 +39,7 @@ MODEL_STYLES = {
     "raman": (_OI["olive"], "X", (0, (2, 2)), "Raman (small $\\lambda$)"),
     "fits": (_OI["wine"], "*", (0, (4, 1, 1, 1)), "paper's fit (Eqs. 24, 55, 70, 80)"),
     "ham": ("#332288", "p", (0, (3, 1)), "HAM series, order $M$"),
+    "series": ("#DDCC77", "H", (0, (3, 1, 1, 1)), r"$\lambda$-series / asymptotics"),
     # not a model: the small-lambda form of the loss, Eq. (77), drawn in Fig. 14
     "fit77": (_OI["teal"], "d", (0, (1, 2)), "Eq. (77), small $\\lambda$"),
 }

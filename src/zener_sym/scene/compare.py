@@ -194,7 +194,7 @@ def compare(lam_or_scene, models=None, quantities=None) -> Comparison:
             if q not in allowed_q:
                 raise ValueError(f"unknown quantity {q!r}; allowed: {', '.join(allowed_q)}")
     if models is None:
-        names = [n for n, m in REGISTRY.items() if m.lam_bound is None or lam < m.lam_bound]
+        names = [n for n, m in REGISTRY.items() if bool(m.valid(lam))]
     else:
         names = [models] if isinstance(models, str) else list(models)
         for n in names:

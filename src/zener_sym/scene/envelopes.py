@@ -81,7 +81,7 @@ def _measure_model(model, lam, ref_summary, ref_hist, tau_grid):
     from ..api import history, summary
 
     out = {q: np.full(lam.shape, np.nan) for q in QUANTITIES}
-    ok = np.ones(lam.shape, bool) if model.lam_bound is None else lam < model.lam_bound
+    ok = model.valid(lam)
     if not ok.any():
         return out
     s = summary(lam[ok], model=model.name)
@@ -107,7 +107,7 @@ def _cost(model, lams, repeats) -> float:
 
     times = []
     for x in lams:
-        if model.lam_bound is not None and x >= model.lam_bound:
+        if not model.valid(x):
             continue
         summary(x, model=model.name)  # warm-up (imports, caches)
         for _ in range(repeats):

@@ -1,0 +1,236 @@
+"""Viscoelastic grains in SI units: two spheres, or a sphere on a wall.
+
+Zener's Eq. (10) is, term for term, the viscoelastic Hertz contact of granular dynamics
+(Kuwabara & Kono 1987; Brilliantov, Spahn, Hertzsch & Poeschel 1996):
+
+    m_eff xi'' + rho (xi^{3/2} + A d/dt xi^{3/2}) = 0,   xi(0) = 0,  xi'(0) = v0,
+
+with xi the mutual compression, m_eff = m1 m2/(m1 + m2) (m1 on a wall), rho = (4/3) E* sqrt(R_eff),
+1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, R_eff = R1 R2/(R1 + R2) (R1 on a flat wall) and A the
+material's dissipative constant. ``zener_sym.derivation.viscoelastic`` derives the mapping
+
+    T = (m_eff/rho)^{2/5} v0^{-1/5},   xi = v0 T delta(t/T),   lambda = A/T = A (rho/m_eff)^{2/5} v0^{1/5},
+
+and the force scale m_eff v0/T.
+
+A, the dissipative constant, is a time in seconds: the ratio of the contact's viscous to its
+elastic stiffness. For a viscoelastic solid with Young's modulus E, Poisson ratio nu and the
+two viscous constants eta1, eta2 of the bulk, Brilliantov et al. (1996) give
+A = (1/3) (3 eta2 - eta1)^2/(3 eta2 + 2 eta1) (1 - nu^2)(1 - 2 nu)/(E nu^2); in practice A is
+fitted to one measured coefficient of restitution, which this module's inverse does not do for
+you, but ``viscoelastic_lambda`` and ``grain_impact`` make the fit a one-line root search.
+
+The contact ends, by default, where the viscoelastic force vanishes (``contact_end="force"``, the
+granular literature's criterion, Schwager & Poeschel 2008); ``contact_end="delta"`` ends it at
+xi = 0 (the plate's criterion of Zener's problem). The result says which it used.
+"""
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..api import history, summary
+from ..exact.force_end import check_contact_end
+from ..exact.solver import LAMBDA_MAX
+from .materials import Material, get_material
+from .units import si_value
+
+__all__ = ["viscoelastic_lambda", "GrainImpact", "grain_impact"]
+
+
+def _positive(value, field: str, unit: str, what: str) -> float:
+    """``value`` as a float if it is a finite real > 0; ValueError naming ``field`` otherwise."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{field} ({what}) must be a real number in {unit}, got {value!r}; "
+                         f"allowed: 0 < {field} < infinity")
+    v = float(value)
+    if not math.isfinite(v) or v <= 0.0:
+        raise ValueError(f"{field} ({what}) must be finite and > 0 (in {unit}), got {value!r}; "
+                         f"allowed: 0 < {field} < infinity")
+    return v
+
+
+def _pos_array(value, name, unit, what):
+    arr = np.asarray(value, dtype=float) if not isinstance(value, (bool, str)) else None
+    if arr is None or arr.dtype.kind not in "fiu":
+        raise ValueError(f"{name} ({what}) must be a real number in {unit}, got {value!r}; "
+                         f"allowed: 0 < {name} < infinity")
+    bad = ~np.isfinite(arr) | (arr <= 0)
+    if bad.any():
+        raise ValueError(f"{name} ({what}) must be finite and > 0 (in {unit}), got "
+                         f"{arr[bad].ravel()[0].item()!r}; allowed: 0 < {name} < infinity")
+    return arr
+
+
+def viscoelastic_lambda(A, rho, m_eff, v0):
+    """Zener's lambda of a viscoelastic grain contact, lambda = A (rho/m_eff)^{2/5} v0^{1/5}.
+
+    Derived in ``zener_sym.derivation.viscoelastic`` by mapping m_eff xi'' + rho (xi^{3/2} +
+    A (xi^{3/2})') = 0 onto Eq. (10).
+
+    Parameters
+    ----------
+    A : float or array_like
+        Dissipative constant [s], > 0.
+    rho : float or array_like
+        Hertz constant (4/3) E* sqrt(R_eff) [N/m^{3/2}], > 0.
+    m_eff : float or array_like
+        Effective mass [kg], > 0.
+    v0 : float or array_like
+        Normal impact speed [m/s], > 0.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        lambda (dimensionless), broadcast over the inputs.
+
+    Raises
+    ------
+    ValueError
+        Naming the input that is not finite and > 0.
+    """
+    A_ = _pos_array(A, "A", "s", "dissipative constant")
+    r_ = _pos_array(rho, "rho", "N/m^(3/2)", "Hertz constant (4/3) E* sqrt(R_eff)")
+    m_ = _pos_array(m_eff, "m_eff", "kg", "effective mass")
+    v_ = _pos_array(v0, "v0", "m/s", "impact speed")
+    lam = A_ * (r_ / m_) ** 0.4 * v_ ** 0.2
+    return float(lam) if lam.ndim == 0 else lam
+
+
+@dataclass
+class GrainImpact:
+    """Result of :func:`grain_impact` (SI units).
+
+    Attributes
+    ----------
+    lam : float
+        Zener's lambda of the contact.
+    contact_end : str
+        ``"force"`` (contact ends where the viscoelastic force vanishes) or ``"delta"`` (at xi = 0).
+    criterion : str
+        The end-of-contact criterion in words.
+    e : float
+        Coefficient of restitution (normal relative velocity after / before).
+    contact_time : float
+        Duration of the contact [s].
+    max_force : float
+        Peak of the viscoelastic contact force rho (xi^{3/2} + A (xi^{3/2})') [N]; it comes
+        before the end of compression, so it is the same for both criteria.
+    max_compression : float
+        Largest mutual compression xi [m].
+    T, m_eff, rho, R_eff, E_star : float
+        Time scale [s], effective mass [kg], Hertz constant [N/m^{3/2}], effective radius [m],
+        effective modulus [Pa].
+    t, force : numpy.ndarray
+        History of the viscoelastic contact force [s], [N] at ``n_history`` times from 0 to the
+        end of contact (with ``"delta"`` it turns negative, attractive, before the end).
+    """
+
+    lam: float
+    contact_end: str
+    criterion: str
+    e: float
+    contact_time: float
+    max_force: float
+    max_compression: float
+    T: float
+    m_eff: float
+    rho: float
+    R_eff: float
+    E_star: float
+    t: np.ndarray = field(repr=False)
+    force: np.ndarray = field(repr=False)
+
+
+_CRITERIA = {"force": "contact ends where the viscoelastic force rho (xi^3/2 + A d/dt xi^3/2) "
+                      "vanishes (grains separate; Schwager & Poeschel 2008)",
+             "delta": "contact ends where the compression xi returns to 0 (plate criterion)"}
+
+
+def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, wall=None,
+                 contact_end="force", n_history=201) -> GrainImpact:
+    """Two viscoelastic spheres, or a sphere on a wall, colliding head-on at speed ``v0``.
+
+    Parameters
+    ----------
+    R1, m1 : float
+        Radius [m] (or a string with a unit, e.g. ``"1 mm"``) and mass [kg] of sphere 1.
+    material1 : Material or str
+        Its elastic constants (``zener_sym.Material`` or a preset name; the density is not used,
+        the mass is given).
+    A : float
+        Dissipative constant of the contact [s] (module docstring).
+    v0 : float
+        Normal relative impact speed [m/s] (or a string with a unit).
+    R2, m2, material2 : optional
+        Sphere 2. Leave all three out for a wall.
+    wall : Material or str, optional
+        The wall's material for a sphere on a flat wall (infinite mass and radius); ``None``
+        (and no sphere 2) is a rigid wall (E -> infinity).
+    contact_end : {"force", "delta"}
+        End-of-contact criterion (default the grains' force-free end).
+    n_history : int
+        Number of times in the force history (>= 2).
+
+    Returns
+    -------
+    GrainImpact
+
+    Raises
+    ------
+    ValueError
+        For a non-positive or non-finite radius, mass, A or speed, an unknown criterion or
+        material, a half-given sphere 2, or a lambda outside the exact model's range.
+    """
+    contact_end = check_contact_end(contact_end)
+    R1 = si_value(R1, "length", "R1")
+    m1 = _positive(m1, "m1", "kg", "mass of sphere 1")
+    A = _positive(A, "A", "s", "dissipative constant")
+    v0 = si_value(v0, "speed", "v0")
+    mat1 = get_material(material1)
+    if isinstance(n_history, bool) or not isinstance(n_history, int) or n_history < 2:
+        raise ValueError(f"n_history must be an int >= 2, got {n_history!r}")
+    given = [x is not None for x in (R2, m2, material2)]
+    if any(given) and not all(given):
+        raise ValueError("sphere 2 needs all of R2, m2 and material2 (leave all out for a wall)")
+    if all(given) and wall is not None:
+        raise ValueError("give either sphere 2 (R2, m2, material2) or wall=, not both")
+    inv_E = (1 - mat1.nu**2) / mat1.E
+    if all(given):
+        R2 = si_value(R2, "length", "R2")
+        m2 = _positive(m2, "m2", "kg", "mass of sphere 2")
+        mat2 = get_material(material2)
+        inv_E += (1 - mat2.nu**2) / mat2.E
+        R_eff, m_eff = R1 * R2 / (R1 + R2), m1 * m2 / (m1 + m2)
+    else:
+        if wall is not None:
+            w: Material = get_material(wall)
+            inv_E += (1 - w.nu**2) / w.E
+        R_eff, m_eff = R1, m1
+    E_star = 1.0 / inv_E
+    rho = 4.0 / 3.0 * E_star * math.sqrt(R_eff)
+    lam = viscoelastic_lambda(A, rho, m_eff, v0)
+    if lam > LAMBDA_MAX:
+        raise ValueError(f"A = {A!r} s, v0 = {v0!r} m/s with m_eff = {m_eff:.6g} kg and rho = {rho:.6g} "
+                         f"N/m^(3/2) give lambda = {lam:.6g}; the exact model accepts "
+                         f"0 <= lambda <= {LAMBDA_MAX:g}")
+    T = (m_eff / rho) ** 0.4 * v0 ** -0.2
+    s = summary(lam, model="exact", contact_end=contact_end)
+    # the grains' force F_c peaks before the end of compression: F_m of the force-free reading
+    F_m = s.F_m if contact_end == "force" else summary(lam, model="exact", contact_end="force").F_m
+    tau = np.linspace(0.0, s.tau_d, n_history)
+    h = history(lam, tau, model="exact", contact_end=contact_end)
+    if contact_end == "force":
+        fc = np.asarray(h.force)
+    else:  # the plate reading's history gives delta and w = 1 - int delta^{3/2}; F_c from them
+        d = np.asarray(h.delta)
+        v = np.asarray(h.velocity) - lam * d**1.5
+        fc = np.sqrt(d) * (d + 1.5 * lam * v)
+    F_scale = m_eff * v0 / T
+    return GrainImpact(lam=lam, contact_end=contact_end, criterion=_CRITERIA[contact_end], e=s.e,
+                       contact_time=T * s.tau_d, max_force=F_scale * F_m,
+                       max_compression=v0 * T * s.delta_m, T=T, m_eff=m_eff, rho=rho, R_eff=R_eff,
+                       E_star=E_star, t=T * tau, force=F_scale * fc)

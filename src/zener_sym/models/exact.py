@@ -10,14 +10,19 @@ high precision (mpmath).
 ``"table"``
     tables only; lambda outside their range is a ValueError (never extrapolated).
 ``"scipy"``
-    direct integration for every lambda (``rtol``, ``method`` as in ``exact.solve``).
+    direct integration for every lambda (``rtol`` in [2.2e-14, 1), ``method`` one of
+    ``zener_sym.exact.solver.METHODS``, as in ``exact.solve``).
 ``"mpmath"``
-    high-precision integration (``dps``).
+    high-precision integration (``dps``, an integer in [15, 100]).
+
+Every option value is validated before any work (``exact.solver.check_options``,
+``exact.mp.check_dps``): a bad one is a ValueError naming the allowed values.
 """
 from __future__ import annotations
 
 import numpy as np
 
+from ..exact import mp as _exact_mp
 from ..exact import solver as _exact
 from ..exact import table as _fast
 from .base import Model, register
@@ -40,9 +45,17 @@ class ExactModel(Model):
         """Mask of lambda to take from the tables, and the options left for integration."""
         options = dict(options)
         backend = options.pop("backend", "auto")
-        if backend not in BACKENDS:
+        if not isinstance(backend, str) or backend not in BACKENDS:
             raise ValueError(f"unknown backend {backend!r} for model 'exact'; allowed: "
                              f"{', '.join(BACKENDS)}")
+        # every option's value checked before any work (a NaN rtol used to hang scipy's loop)
+        if "rtol" in options or "method" in options:
+            rtol, _, method = _exact.check_options(rtol=options.get("rtol", 1e-12),
+                                                   method=options.get("method", "DOP853"))
+            options.update({k: v for k, v in (("rtol", rtol), ("method", method))
+                            if k in options})
+        if "dps" in options:
+            options["dps"] = _exact_mp.check_dps(options["dps"])
         if backend == "table":
             if options:
                 raise ValueError(f"option {sorted(options)[0]!r} does not go with backend='table'")
@@ -66,12 +79,10 @@ class ExactModel(Model):
             if "dps" in options:
                 raise ValueError("option 'dps' goes with backend='mpmath'")
             return {float(x): _exact.solve(x, **options) for x in np.unique(lam_values)}
-        from ..exact import mp as exact_mp
-
         bad = set(options) - {"dps"}
         if bad:
             raise ValueError(f"option {sorted(bad)[0]!r} does not go with backend='mpmath'")
-        return {float(x): exact_mp.solve(x, **options) for x in np.unique(lam_values)}
+        return {float(x): _exact_mp.solve(x, **options) for x in np.unique(lam_values)}
 
     def _summary(self, lam, **options):
         fast, rest = self._split(lam, options)

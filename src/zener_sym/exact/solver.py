@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-__all__ = ["ExactSolution", "solve", "check_options", "eval_budget", "LAMBDA_MAX", "METHODS",
+__all__ = ["ExactSolution", "solve", "solve_early", "check_options", "eval_budget", "LAMBDA_MAX", "METHODS",
            "RTOL_MIN", "RTOL_MAX"]
 
 #: Largest lambda the exact model accepts (tau_d is about 2300 at lambda = 100 and 34000 at
@@ -130,6 +130,11 @@ class _TwoPieces:
 
     def __init__(self, before, after, tau_dc):
         self.before, self.after, self.tau_dc = before, after, tau_dc
+
+    @property
+    def after_solution(self):
+        """The phase-2b result itself (``solve_early`` passes the solve_ivp result here)."""
+        return self.after
 
     def __call__(self, t):
         t = np.atleast_1d(np.asarray(t, dtype=float))
@@ -331,14 +336,15 @@ def _loading(lam, rtol, atols, method, budget=None):
     return s1, float(s1.t_events[0][0]), tuple(s1.y_events[0][0])
 
 
-def _middle(lam, rtol, atol, method, tau1, u1, w1, J1, budget=None):
+def _middle(lam, rtol, atol, method, tau1, u1, w1, J1, budget=None, t_stop=None):
     """Phase 2 in τ from τ1; returns (dense (δ, w), τ_dc, δ_m, τ2, (δ2, w2, J2)).
 
     2a, state (δ, v, w, J) up to the end of compression, the event v = 0 on the state v (which
     gets no absolute tolerance: relative control down to its zero). 2b, state (δ, w, J) from
     τ_dc to the hand-over to u where the u-form is not stiff, |∂(dw/du)/∂w|·u = 2u⁵/v² <= 1,
     i.e. v² >= 2δ^{5/2}; after the end of compression v² − 2δ^{5/2} only increases, so the rising
-    crossing is unique.
+    crossing is unique. With ``t_stop``, 2b runs for t_stop past τ_dc instead (no hand-over;
+    the returned τ2 and state are then None).
     """
 
     def v_zero(t, y):
@@ -361,6 +367,11 @@ def _middle(lam, rtol, atol, method, tau1, u1, w1, J1, budget=None):
         return v * v - 2.0 * d * d * np.sqrt(d)
 
     hand_over.terminal, hand_over.direction = True, 1
+    if t_stop is not None:
+        sb = solve_ivp(_rhs_tau(lam, budget), (tau_dc, tau_dc + t_stop), [delta_m, w_dc, J_dc],
+                       method=method, rtol=rtol, atol=np.array([atol, 1e-300, atol]),
+                       first_step=1e-3 * tau_dc)
+        return _TwoPieces(sa.sol, sb, tau_dc), tau_dc, delta_m, None, None
     # first_step: LSODA's own first step from this state (δ' = 0) can have zero length, which its
     # dense output refuses; the other methods' error control corrects any first step
     sb = solve_ivp(_rhs_tau(lam, budget), (tau_dc, t_cap), [delta_m, w_dc, J_dc], method=method,
@@ -380,3 +391,23 @@ def _unloading(lam, rtol, atols, method, tau2, d2, w2, J2, budget=None):
     if s3.status != 0:
         raise RuntimeError(f"exact solver: unloading phase failed at lambda = {lam}: {s3.message}")
     return s3
+
+
+def solve_early(lam: float, span: float, rtol: float = 1e-13, atol: float = 1e-15) -> dict:
+    """Integrate Eq. (10) from the impact to ``span`` past the end of compression (DOP853).
+
+    For large lambda the rest of the contact follows one universal orbit (see
+    ``zener_sym.exact.table_build``), so the tables need only this early part per lambda: phase 1,
+    phase 2a up to τ_dc and phase 2b for ``span`` more. Returns tau_dc, delta_m and the state
+    (tau, delta, w, J) at tau_dc + span.
+    """
+    rtol, atol, method = check_options(rtol=rtol, atol=atol, method="DOP853")
+    lam = float(lam)
+    atols = np.array([atol, 1e-300, atol])
+    budget = _Budget(lam, method, rtol)
+    _, u1, (tau1, w1, J1) = _loading(lam, rtol, atols, method, budget)
+    mid, tau_dc, delta_m, _, _ = _middle(lam, rtol, atol, method, tau1, u1, w1, J1, budget,
+                                         t_stop=None if span is None else span)
+    sb = mid.after_solution
+    return {"tau_dc": tau_dc, "delta_m": delta_m, "tau": float(sb.t[-1]),
+            "delta": float(sb.y[0, -1]), "w": float(sb.y[1, -1]), "J": float(sb.y[2, -1])}

@@ -4,9 +4,11 @@ high precision (mpmath).
 ``backend``:
 
 ``"auto"`` (default)
-    lambda in the table's range [0, 5] (``zener_sym.exact.table.LAM_MIN``, ``LAM_MAX``) is evaluated from the
-    tables (error bounds ``zener_sym.exact.table.SUMMARY_RTOL``, ``HISTORY_ATOL``); any other lambda is
-    integrated with scipy. Giving ``rtol`` or ``method`` (integrator options) integrates all.
+    summaries for every lambda the model accepts, [0, 1000] (``zener_sym.exact.table.LAM_MIN``,
+    ``LAM_MAX``), and histories for lambda in [0, 5] (``HISTORY_LAM_MAX``) are evaluated from the
+    tables (error bounds ``zener_sym.exact.table.SUMMARY_RTOL``, ``HISTORY_ATOL``); histories at
+    larger lambda are integrated with scipy. Giving ``rtol`` or ``method`` (integrator options)
+    integrates all.
 ``"table"``
     tables only; lambda outside their range is a ValueError (never extrapolated).
 ``"scipy"``
@@ -32,8 +34,8 @@ BACKENDS = ("auto", "table", "scipy", "mpmath")
 
 class ExactModel(Model):
     name = "exact"
-    description = ("Zener's equation (10) solved exactly: Chebyshev tables for 0 <= lambda <= 5, "
-                   "direct integration otherwise")
+    description = ("Zener's equation (10) solved exactly: Chebyshev tables (summary for "
+                   "0 <= lambda <= 1000, history for 0 <= lambda <= 5), direct integration otherwise")
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m",
                       "impulse", "int_F2", "xi")
     history_fields = ("delta", "velocity", "force", "impulse")
@@ -41,8 +43,12 @@ class ExactModel(Model):
     bound_reason = "the range over which the integrator is tested"
     options = ("rtol", "method", "backend", "dps")
 
-    def _split(self, lam, options):
-        """Mask of lambda to take from the tables, and the options left for integration."""
+    def _split(self, lam, options, history=False):
+        """Mask of lambda to take from the tables, and the options left for integration.
+
+        The summary tables cover [0, 1000], the history tables [0, 5] (``history=True``)."""
+        in_range = _fast.history_in_range if history else _fast.in_range
+        top = _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
         options = dict(options)
         backend = options.pop("backend", "auto")
         if not isinstance(backend, str) or backend not in BACKENDS:
@@ -59,11 +65,12 @@ class ExactModel(Model):
         if backend == "table":
             if options:
                 raise ValueError(f"option {sorted(options)[0]!r} does not go with backend='table'")
-            if not np.all(_fast.in_range(lam)):
-                bad = float(lam[~_fast.in_range(lam)].ravel()[0])
+            if not np.all(in_range(lam)):
+                bad = float(lam[~in_range(lam)].ravel()[0])
                 raise ValueError(
-                    f"lambda = {bad!r} is outside the exact table's range [{_fast.LAM_MIN:g}, "
-                    f"{_fast.LAM_MAX:g}]; use backend='auto' (integrates outside) or 'scipy'")
+                    f"lambda = {bad!r} is outside the exact {'history' if history else 'summary'}"
+                    f" table's range [{_fast.LAM_MIN:g}, {top:g}]; use backend='auto' "
+                    f"(integrates outside) or 'scipy'")
             return np.ones(lam.shape, bool), None
         if backend == "auto":
             if options.keys() & {"rtol", "method"}:
@@ -71,7 +78,7 @@ class ExactModel(Model):
             else:
                 if "dps" in options:
                     raise ValueError("option 'dps' goes with backend='mpmath'")
-                return _fast.in_range(lam), ("scipy", options)
+                return in_range(lam), ("scipy", options)
         return np.zeros(lam.shape, bool), (backend, options)
 
     def _solutions(self, lam_values, backend, options):
@@ -100,7 +107,7 @@ class ExactModel(Model):
         return out
 
     def _history(self, lam, tau, **options):
-        fast, rest = self._split(lam, options)
+        fast, rest = self._split(lam, options, history=True)
         out = {f: np.empty(tau.shape) for f in self.history_fields}
         if fast.any():
             v = _fast.history(lam[fast], tau[fast])

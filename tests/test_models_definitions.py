@@ -86,10 +86,16 @@ def test_pulse_impulse_against_quadrature_of_its_force(model):
 
 
 def test_reed_closed_form_integral():
-    x = np.array([0.0, 0.3, np.pi / 2, 2.0, np.pi])
+    from zener_sym.ham.quadrature import impulse_s
+
+    x = np.array([0.0, 0.3, np.pi / 2, np.pi / 2 + 1e-4, 2.0, np.pi])
     with mpmath.workdps(30):
         ref = [float(mpmath.quad(lambda t: mpmath.sin(t) ** 1.5, [0, v])) for v in x]
     np.testing.assert_allclose(fm.int_sin32(x), ref, rtol=1e-14, atol=1e-16)
+    # the series reed's history evaluates, against the closed form on a fine grid
+    xs = np.linspace(0.0, np.pi, 2001)
+    np.testing.assert_allclose(impulse_s(np.zeros_like(xs), xs), fm.int_sin32(xs), rtol=0,
+                               atol=5e-14)
 
 
 @pytest.mark.parametrize("model", ["ham0", "hunter", "reed"])

@@ -182,14 +182,27 @@ def _ks_table():
     return _KS_TABLE
 
 
+def _clenshaw_take(cT, idx, x):
+    """sum_j cT[j, idx] T_j(x) pointwise, each point with its coefficient column ``idx`` (this
+    leaf module imports nothing of the package, so not ham.chebyshev.clenshaw_take)."""
+    n = cT.shape[0]
+    x2 = 2.0 * x
+    b1 = cT[n - 1].take(idx) + np.zeros_like(x)
+    b2 = np.zeros_like(x)
+    for j in range(n - 2, 0, -1):
+        b = x2 * b1
+        b -= b2
+        b += cT[j].take(idx)
+        b1, b2 = b, b1
+    return x * b1 - b2 + cT[0].take(idx)
+
+
 def impulse_s(a, theta):
     """K_s(a, theta) = int_0^min(theta, pi) exp(-a t) sin^{3/2} t dt, fast for many theta per a.
 
     Same value as ``sqrt_integrals(a, theta, ("s",))["s"]`` to about 1e-15 (tests), from the
     Chebyshev series for a <= A_SERIES and the quadrature for larger a.
     """
-    from .chebyshev import clenshaw_take
-
     a, theta = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(theta, dtype=float))
     if not (np.all(np.isfinite(a)) and np.all(a >= 0)):
         raise ValueError("impulse_s: the decay rate a must be finite and >= 0")
@@ -213,10 +226,10 @@ def impulse_s(a, theta):
         out_f = np.empty(th.shape)
         if left.any():
             x = np.clip(th[left] * (4.0 / np.pi) - 1.0, -1.0, 1.0)
-            out_f[left] = th[left] ** 2.5 * clenshaw_take(gG, inv[left], x)
+            out_f[left] = th[left] ** 2.5 * _clenshaw_take(gG, inv[left], x)
         if (~left).any():
             r = np.pi - th[~left]
             x = np.clip(r * (4.0 / np.pi) - 1.0, -1.0, 1.0)
-            out_f[~left] = k_pi[inv[~left]] - r**2.5 * clenshaw_take(gH, inv[~left], x)
+            out_f[~left] = k_pi[inv[~left]] - r**2.5 * _clenshaw_take(gH, inv[~left], x)
         out[fast] = out_f
     return out

@@ -108,6 +108,9 @@ class ExactModel(Model):
 
     def _history(self, lam, tau, **options):
         fast, rest = self._split(lam, options, history=True)
+        if fast.all():  # shapes kept (the table sees a broadcast lambda column as such)
+            v = _fast.history(lam, tau)
+            return {f: v[f] for f in self.history_fields}
         out = {f: np.empty(tau.shape) for f in self.history_fields}
         if fast.any():
             v = _fast.history(lam[fast], tau[fast])

@@ -86,6 +86,9 @@ class Ham0(_HamModel):
         if backend == "numpy":
             from ..ham.quadrature import impulse_s
 
+            if lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(
+                    lam, np.broadcast_to(lam[..., :1], lam.shape)):
+                lam = lam[..., :1]  # a broadcast column: the parameters once per line
             k, beta, omega0 = h0.params(lam)
             # the summary's tau_d (generated: pi * omega0**(-1.0)), so delta is exactly 0 from
             # there on (omega0 tau <= pi left sin(pi) = 1e-16 at tau_d)
@@ -98,7 +101,8 @@ class Ham0(_HamModel):
                 # Eq. (47): omega0^{-5/2} K_s(3 beta / (2 omega0), omega0 tau), as the generated
                 # h0.impulse, with K_s from per-rate Chebyshev series instead of a 64-node rule
                 # per point (tests hold the two within 1e-13)
-                imp = impulse_s(1.5 * beta / omega0, omega0 * tau) / omega0**2.5
+                a = np.broadcast_to(1.5 * beta / omega0, tau.shape)
+                imp = impulse_s(a, omega0 * tau) / omega0**2.5
                 out["impulse"], out["velocity"] = imp, 1.0 - imp
             return out
         else:

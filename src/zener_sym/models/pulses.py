@@ -102,7 +102,8 @@ class Reed(_Sine):
     description = "Reed's sin^(3/2) force pulse, Eq. (53) (lambda ignored)"
 
     def _force(self, x):
-        return fm.A_REED * np.sin(x) ** 1.5  # Eq. (53) at the phase x = Omega tau in [0, pi]
+        s = np.sin(x)
+        return fm.A_REED * s * np.sqrt(s)  # Eq. (53) at the phase x = Omega tau in [0, pi]
 
     def _impulse(self, x):
         # int_0^x sin^{3/2} = K_s(0, x): the closed form is an incomplete beta function

@@ -84,3 +84,55 @@ def test_scipy_dop853_loop_summary(benchmark):
     lams = np.linspace(0.0, 5.0, 2000)
     benchmark.pedantic(lambda: [naive_solve(x, 1e-10, "DOP853") for x in lams], rounds=1,
                        iterations=1)
+
+
+# --- issue 14, item 8: each group holds both sides of one ratio --------------------------------
+# (the same comparisons as zener_sym.bench.exact_fast_targets.issue14_targets, which
+# `zener-sym bench` reports as ratios)
+
+H_LAMS = np.linspace(0.0, 5.0, 200)
+H_S = np.linspace(0.0, 1.0, 500)
+
+
+@pytest.mark.benchmark(group="exact history 200x500")
+def test_exact_history_200x500(benchmark):
+    tau = zs.summary(H_LAMS, model="exact").tau_d[:, None] * 1.05 * H_S
+    out = benchmark(lambda: zs.history(H_LAMS[:, None], tau, model="exact").force)
+    assert out.shape == (200, 500)
+
+
+@pytest.mark.benchmark(group="exact history 200x500")
+def test_scipy_dop853_loop_history_rtol_1e10(benchmark):
+    tau = zs.summary(H_LAMS, model="exact").tau_d[:, None] * 1.05 * H_S
+    out = benchmark.pedantic(lambda: dop853_force_loop(H_LAMS, tau, rtol=1e-10), rounds=1,
+                             iterations=1)
+    assert out.shape == (200, 500)
+
+
+@pytest.mark.parametrize("model", ["exact", "ham1"])
+@pytest.mark.benchmark(group="scalar summary")
+def test_scalar_summary(benchmark, model):
+    if model not in REGISTRY:
+        pytest.skip(f"{model} not registered")
+    lams = iter(np.tile(np.linspace(0.05, 2.43, 97), 1000))  # a new lambda every call
+    benchmark(lambda: zs.summary(float(next(lams)), model=model))
+
+
+P_LAMS = np.linspace(0.0, 2.4, 200)
+
+
+@pytest.mark.parametrize("model", ["exact", "ham0", "hunter", "reed"])
+@pytest.mark.benchmark(group="history 200x500, lambda in [0, 2.4]")
+def test_model_history_200x500(benchmark, model):
+    tau = zs.summary(P_LAMS, model="ham0").tau_d[:, None] * 1.05 * H_S
+    out = benchmark(lambda: zs.history(P_LAMS[:, None], tau, model=model).force)
+    assert out.shape == (200, 500)
+
+
+@pytest.mark.parametrize("where", ["[0, 5]", "(5, 1000]"])
+@pytest.mark.benchmark(group="exact summary per lambda, 2000 lambda")
+def test_exact_summary_small_and_large_lambda(benchmark, where):
+    lams = np.linspace(0.0, 5.0, 2000) if where == "[0, 5]" else np.geomspace(5.0 + 1e-9, 1000.0,
+                                                                               2000)
+    s = benchmark(lambda: zs.summary(lams, model="exact"))
+    assert s.tau_d.shape == (2000,)

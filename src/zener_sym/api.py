@@ -57,7 +57,8 @@ class Summary(_Fields):
 
     lam, delta_m (max compression, Eq. 23/24), tau_dc (compression duration), tau_d (contact
     duration), tau_dr = tau_d - tau_dc, eta = tau_dr / tau_dc (Eq. 61), e (restitution,
-    -delta'(tau_d)), F_m = delta_m^{3/2}, impulse (I at tau_d, Eq. 47), int_F2 (integral of F^2
+    -delta'(tau_d)), F_m (maximum of the model's force history: delta_m^{3/2} where the force is
+    delta^{3/2}, Hunter's amplitude for hunter), impulse (I at tau_d, Eq. 47), int_F2 (integral of F^2
     over the contact, Eq. 76), xi = 2 I - I^2 (Eq. 69).
     """
 
@@ -67,7 +68,9 @@ class Summary(_Fields):
 
 class History(_Fields):
     """Dimensionless histories on a time grid: tau, delta, velocity (sphere, 1 - I, Eq. 64),
-    force (delta^{3/2}, Eq. 45), impulse (Eq. 47; also the plate deflection w-bar, Eq. 66)."""
+    force (the model's contact force: delta^{3/2}, Eq. 45, for all but hunter's sine, Eq. 52),
+    impulse (Eq. 47; also the plate deflection w-bar, Eq. 66). From the model's tau_d on, delta
+    and the force are exactly 0 and the impulse keeps its final value."""
 
     _all = ("tau",) + HISTORY_FIELDS
     _kind = "history"

@@ -45,8 +45,101 @@ def history_target(m: int = 200, k: int = 200, quick: bool = False) -> dict:
             "fast_s": t_fast, "slow_s": t_loop, "ratio": t_loop / t_fast, "required": 20.0}
 
 
+def _dop853_force_loop(lams, tau, rtol):
+    """Per lambda a scipy DOP853 solve with dense output (``methods.naive_solve``: tau from 0,
+    guarded right-hand side, event delta = 0), the force on that row of ``tau`` (the comparator
+    of ``bench.targets``, which imports this module, so it is not imported from there)."""
+    from .methods import naive_solve
+
+    out = np.empty_like(tau)
+    for i, lam in enumerate(lams):
+        summ, sol = naive_solve(lam, rtol, "DOP853", dense=True)
+        t = tau[i]
+        d = np.maximum(sol.sol(np.minimum(t, summ["tau_d"]))[0], 0.0)
+        out[i] = np.where(t < summ["tau_d"], d**1.5, 0.0)
+    return out
+
+
+def history_vs_dop853_target(m: int = 200, k: int = 500, quick: bool = False) -> dict:
+    """Issue 14: exact histories (tables) on m lambda in [0, 5] x k tau against a per-lambda scipy
+    DOP853 solve with dense output at rtol 1e-10 (the textbook set-up of ``bench.targets``:
+    tau from 0, guarded right-hand side, event delta = 0), the force on the same grid."""
+    import zener_sym as zs
+
+    lams = np.linspace(0.0, 5.0, m)
+    tau = zs.summary(lams, model="exact").tau_d[:, None] * 1.05 * np.linspace(0.0, 1.0, k)
+    sub = np.arange(0, m, 1 if not quick else 10)
+    t_fast = median_time(lambda: zs.history(lams[:, None], tau, model="exact").force,
+                         min_repeats=3, min_total=0.2)
+    t_loop = median_time(lambda: _dop853_force_loop(lams[sub], tau[sub], rtol=1e-10),
+                         min_repeats=1, min_total=0.0) * m / len(sub)
+    return {"target": "exact history (tables) vs per-lambda scipy DOP853, rtol 1e-10, dense",
+            "grid": f"{m} lambda x {k} tau (loop timed on {len(sub)} lambda)",
+            "fast_s": t_fast, "slow_s": t_loop, "ratio": t_loop / t_fast, "required": 300.0}
+
+
+def ham1_scalar_summary_target() -> dict:
+    """Issue 14: a scalar ham1 summary within 3x of a scalar exact summary; ratio = time of
+    exact / time of ham1 (required >= 1/3)."""
+    import zener_sym as zs
+
+    lams = (0.3, 1.1, 2.0, 2.42)  # 2.42: inside [2.414, 2.44], where the series fall back
+
+    def one(model):
+        return lambda: [zs.summary(x, model=model) for x in lams]
+
+    t_exact = median_time(one("exact"), min_repeats=5, min_total=0.2) / len(lams)
+    t_ham1 = median_time(one("ham1"), min_repeats=5, min_total=0.2) / len(lams)
+    return {"target": "scalar summary: exact (tables) time / ham1 time, per call",
+            "grid": "lambda 0.3, 1.1, 2.0, 2.42, one call each", "fast_s": t_ham1,
+            "slow_s": t_exact, "ratio": t_exact / t_ham1, "required": 1.0 / 3.0}
+
+
+def pulse_history_targets(m: int = 200, k: int = 500) -> list[dict]:
+    """Issue 14: ham0, hunter and reed histories no slower than exact's on the same grid
+    (m lambda in [0, 2.4] x k tau up to 1.05 of ham0's tau_d); ratio = time of exact / time of
+    the model (required >= 1)."""
+    import zener_sym as zs
+
+    lams = np.linspace(0.0, 2.4, m)
+    tau = zs.summary(lams, model="ham0").tau_d[:, None] * 1.05 * np.linspace(0.0, 1.0, k)
+    t_exact = median_time(lambda: zs.history(lams[:, None], tau, model="exact").force,
+                          min_repeats=3, min_total=0.2)
+    rows = []
+    for name in ("ham0", "hunter", "reed"):
+        t = median_time(lambda: zs.history(lams[:, None], tau, model=name).force, min_repeats=3,
+                        min_total=0.2)
+        rows.append({"target": f"{name} history (every field) vs exact history",
+                     "grid": f"{m} lambda x {k} tau", "fast_s": t, "slow_s": t_exact,
+                     "ratio": t_exact / t, "required": 1.0})
+    return rows
+
+
+def large_lambda_summary_target(n: int = 2000) -> dict:
+    """Issue 14: exact summaries per lambda on (5, 1000] within 10x of those on [0, 5]; ratio =
+    time per lambda on [0, 5] / time per lambda on (5, 1000] (required >= 0.1)."""
+    import zener_sym as zs
+
+    small = np.linspace(0.0, 5.0, n)
+    large = np.geomspace(5.0 + 1e-9, 1000.0, n)
+    t_small = median_time(lambda: zs.summary(small, model="exact"), min_repeats=5, min_total=0.2)
+    t_large = median_time(lambda: zs.summary(large, model="exact"), min_repeats=5, min_total=0.2)
+    return {"target": "exact summary per lambda: [0, 5] time / (5, 1000] time",
+            "grid": f"{n} lambda each", "fast_s": t_large / n, "slow_s": t_small / n,
+            "ratio": t_small / t_large, "required": 0.1}
+
+
+def issue14_targets(quick: bool = False) -> list[dict]:
+    """The speed targets of issue 14, item 8, measured side by side in one run."""
+    rows = [history_vs_dop853_target(quick=quick), ham1_scalar_summary_target(),
+            *pulse_history_targets(), large_lambda_summary_target()]
+    for r in rows:
+        r["met"] = r["ratio"] >= r["required"]
+    return rows
+
+
 def run(quick: bool = False) -> list[dict]:
     rows = [summary_target(quick=quick), history_target(quick=quick)]
     for r in rows:
         r["met"] = r["ratio"] >= r["required"]
-    return rows
+    return rows + issue14_targets(quick=quick)

@@ -46,10 +46,13 @@ import numpy as np
 from .. import params
 from .solver import LAMBDA_MAX
 
-__all__ = ["MpSolution", "solve", "DPS_MIN"]
+__all__ = ["MpSolution", "solve", "check_dps", "DPS_MIN", "DPS_MAX"]
 
 #: Smallest accepted number of decimal digits.
 DPS_MIN = 15
+#: Largest accepted number of decimal digits (the cost grows about as dps^3; at dps 30 lambda =
+#: 1000 already takes about two minutes).
+DPS_MAX = 100
 _GUARD_TOL = 8  # digits by which the per-step tolerance is tighter than the requested dps
 _GUARD_WORK = 15  # extra digits of the working precision
 _MAX_STEPS = 200_000  # per phase; far above what lambda <= LAMBDA_MAX needs
@@ -227,7 +230,9 @@ class MpSolution:
 
     @property
     def xi(self):
-        return 1 - self.w_end**2  # = 2Ī − Ī², without the cancellation
+        """xi = 2λ∫F̄² dτ (energy balance, = 1 − e²): exactly 0 at λ = 0 and never negative,
+        where 1 − w_end² would be a rounding-level number of either sign."""
+        return 2 * self.lam * self.int_F2
 
     # --- history -------------------------------------------------------------------------
 
@@ -327,12 +332,17 @@ def _invert_np(C, t):
     return sig
 
 
-def _check_dps(dps) -> int:
+def check_dps(dps) -> int:
+    """dps as an int; ValueError unless it is an integer (not bool) in [DPS_MIN, DPS_MAX]."""
     if isinstance(dps, bool) or not isinstance(dps, numbers.Integral):
-        raise ValueError(f"dps must be an int >= {DPS_MIN} (decimal digits), got {dps!r}")
-    if dps < DPS_MIN:
-        raise ValueError(f"dps must be >= {DPS_MIN} (decimal digits), got {dps}")
+        raise ValueError(f"dps must be an integer in [{DPS_MIN}, {DPS_MAX}] (decimal digits), "
+                         f"got {dps!r}")
+    if not DPS_MIN <= dps <= DPS_MAX:
+        raise ValueError(f"dps must be in [{DPS_MIN}, {DPS_MAX}] (decimal digits), got {dps}")
     return int(dps)
+
+
+_check_dps = check_dps
 
 
 def solve(lam, dps: int = 30) -> MpSolution:
@@ -344,7 +354,7 @@ def solve(lam, dps: int = 30) -> MpSolution:
         Inelasticity parameter (Eq. 11), 0 <= lam <= LAMBDA_MAX; converted exactly from the
         float to mpf.
     dps : int
-        Decimal digits wanted, >= 15. The work runs at dps + 15 digits with the per-step
+        Decimal digits wanted, DPS_MIN <= dps <= DPS_MAX (15 to 100). The work runs at dps + 15 digits with the per-step
         tolerance 10^-(dps+8) (see the module docstring for the order and step rule).
 
     Returns

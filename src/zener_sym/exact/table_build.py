@@ -20,19 +20,40 @@ Splitting the recovery where w = 0 matters: for large lambda delta changes regim
 quasi-static delta ~ (w/lambda)^{2/3} to the linear end e (tau_d - tau)); a single piece converges
 slowly. The impulse I is tabulated directly on each piece (absolute accuracy).
 
+Large lambda (pieces above ``LOG_FROM``, summary only; the Chebyshev variable is ln lambda).
+With delta = lambda^-4 D, w = lambda^-5 W, tau = lambda T, Eq. (10) becomes the lambda = 1 system
+D' = W - D^{3/2}, W' = -D^{3/2} started at W = lambda^5: every lambda runs along one universal
+orbit of that system once its loading transient has died out (the orbit attracts at the rate
+1.5 lambda delta^{1/2}). So a node integrates only the early part (``solver.solve_early``: to
+tau_dc plus ``MATCH_DECAYS`` e-foldings of that transient), and the rest of its contact is read
+off one solve at ``LAM_U`` (the orbit in that lambda's variables), matched at equal W:
+tau_d = tau_M + (lambda / LAM_U) (tau_d,U - tau_U(W_M)). The same orbit gives e = C lambda^-5
+with C = e_U LAM_U^5 (the end of the orbit; the review saw e lambda^5 settle above lambda = 3),
+and the energy balance gives int_F2 = (1 - e^2) / (2 lambda). The build stays cheap: one long
+solve instead of one per node.
+
 The node values come from a floating-point integrator, so the text is not bit-reproducible across
 machines: the table is NOT in ``codegen.BUILDERS``; ``zener-sym exact-table --check`` rebuilds it
 and compares numerically (see ``CHECK_RTOL``).
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import pathlib
 
 import numpy as np
 
-#: Breakpoints of the lambda pieces: the validated range of the table is [0, 5].
-LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0)
+#: Breakpoints of the lambda pieces: the summary table covers [0, 1000], the history [0, 5].
+LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0, 1000.0)
+#: Pieces starting at or above this lambda use ln(lambda) as their Chebyshev variable and carry
+#: the summary only (their nodes come from the universal orbit, see the module docstring).
+LOG_FROM = 5.0
+#: lambda of the one long solve that gives the universal orbit (above LAM_PIECES[-1]: every
+#: node's W_M = lambda^5 w_M must lie on the part of the orbit past its own transient).
+LAM_U = 1050.0
+#: e-foldings of the loading transient a large-lambda node integrates past tau_dc before matching.
+MATCH_DECAYS = 40.0
 #: Chebyshev points per lambda piece.
 N_LAM = 22
 #: Chebyshev points per time piece C, A, B.
@@ -87,6 +108,52 @@ def _rest_time(sol) -> float:
     return brentq(w, sol.tau_dc, sol.tau_d, xtol=1e-15, rtol=1e-15, maxiter=200)
 
 
+def is_log_piece(a: float) -> bool:
+    """True for a lambda piece [a, b] tabulated in ln(lambda) (summary only)."""
+    return a >= LOG_FROM
+
+
+@functools.cache
+def universal_orbit():
+    """The universal orbit as the solution at LAM_U, its rest time and C = e lambda^5."""
+    from . import solver as exact
+
+    U = exact.solve(LAM_U, rtol=RTOL)
+    return U, _rest_time(U), -U.w_end * LAM_U**5
+
+
+def large_node(lam: float) -> dict:
+    """Summary values of one large lambda from its early part and the universal orbit."""
+    from scipy.optimize import brentq
+
+    from . import solver as exact
+
+    U, tau_w0_U, C = universal_orbit()
+    rate = 1.5 * lam * lam ** (-1.0 / 3.0)  # 1.5 lambda delta^{1/2} with delta ~ lambda^{-2/3}
+    r = exact.solve_early(lam, MATCH_DECAYS / rate, rtol=RTOL)
+    target = (lam / LAM_U) ** 5 * r["w"]  # the same W = lambda^5 w on the orbit
+
+    def w_U(t):
+        return float(U.history(np.array([t]))["velocity"][0]) - target
+
+    t_U = brentq(w_U, U.tau_dc, tau_w0_U, xtol=1e-14, rtol=8.9e-16, maxiter=300)
+    scale = lam / LAM_U  # tau = lambda T
+    tau_d = r["tau"] + scale * (U.tau_d - t_U)
+    tau_w0 = r["tau"] + scale * (tau_w0_U - t_U)
+    e = C / lam**5
+    return {"delta_m": r["delta_m"], "tau_dc": r["tau_dc"], "log_tau_d": np.log(tau_d),
+            "log_e": np.log(e), "int_F2": (1.0 - e * e) / (2.0 * lam),
+            "rest_over_lam": (tau_w0 - r["tau_dc"]) / lam}
+
+
+def piece_nodes(a: float, b: float) -> np.ndarray:
+    """The lambda nodes of the piece [a, b] (Chebyshev points in lambda or in ln lambda)."""
+    x = cheb_nodes(N_LAM)
+    if is_log_piece(a):
+        return np.exp(np.log(a) + (np.log(b) - np.log(a)) * (x + 1.0) / 2.0)
+    return a + (b - a) * (x + 1.0) / 2.0
+
+
 def node_data(lam: float) -> dict:
     """Summary values and history samples of one lambda (lambda > 0: nodes never include 0)."""
     from . import solver as exact
@@ -127,14 +194,16 @@ def build_tables() -> dict:
 
     2-D arrays are indexed [time degree, lambda degree].
     """
-    xl = cheb_nodes(N_LAM)
     summary = {k: [] for k in SUMMARY_KEYS}
     history = {(p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
     for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:]):
-        lams = a + (b - a) * (xl + 1.0) / 2.0
-        data = [node_data(float(x)) for x in lams]
+        lams = piece_nodes(a, b)
+        node = large_node if is_log_piece(a) else node_data
+        data = [node(float(x)) for x in lams]
         for k in SUMMARY_KEYS:
             summary[k].append(_trim(cheb_coefficients(np.array([d[k] for d in data]))))
+        if is_log_piece(a):
+            continue
         for key in history:
             vals = np.array([d[key] for d in data]).T  # [time node, lambda node]
             c = cheb_coefficients(cheb_coefficients(vals, axis=0), axis=1)
@@ -165,7 +234,8 @@ def render(tables: dict | None = None) -> str:
 
     t = build_tables() if tables is None else tables
     lines = [
-        '"""Chebyshev tables of the exact solution of Eq. (10) for 0 <= lambda <= 5.\n',
+        '"""Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= '
+        f'{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {LOG_FROM:g}.\n',
         "GENERATED by `zener-sym exact-table`: DO NOT EDIT. Built by zener_sym.exact.table_build from",
         f"scipy {scipy.__version__} solves at rtol {RTOL:g}; `zener-sym exact-table --check` rebuilds and",
         "compares numerically (the node values come from a floating-point integrator, so the bytes",
@@ -174,6 +244,7 @@ def render(tables: dict | None = None) -> str:
         '"""',
         f"INPUTS_HASH = {inputs_hash()!r}",
         f"LAM_PIECES = {LAM_PIECES!r}",
+        f"LOG_FROM = {LOG_FROM!r}",
         f"C_STRETCH = {C_STRETCH!r}",
         "",
         "#: field -> one tuple of Chebyshev coefficients per lambda piece",
@@ -186,6 +257,7 @@ def render(tables: dict | None = None) -> str:
         lines.append("    ),")
     lines += ["}", "",
               "#: (time piece, field) -> one coefficient matrix [time degree][lambda degree] per lambda piece",
+              "#: up to LOG_FROM",
               "HISTORY = {"]
     for key in sorted(t["history"]):
         lines.append(f"    {key!r}: (")

@@ -4,27 +4,34 @@ high precision (mpmath).
 ``backend``:
 
 ``"auto"`` (default)
-    lambda in the table's range [0, 5] (``zener_sym.exact.table.LAM_MIN``, ``LAM_MAX``) is evaluated from the
-    tables (error bounds ``zener_sym.exact.table.SUMMARY_RTOL``, ``HISTORY_ATOL``); any other lambda is
-    integrated with scipy. Giving ``rtol`` or ``method`` (integrator options) integrates all.
+    summaries for every lambda the model accepts, [0, 1000] (``zener_sym.exact.table.LAM_MIN``,
+    ``LAM_MAX``), and histories for lambda in [0, 5] (``HISTORY_LAM_MAX``) are evaluated from the
+    tables (error bounds ``zener_sym.exact.table.SUMMARY_RTOL``, ``HISTORY_ATOL``); histories at
+    larger lambda are integrated with scipy. Giving ``rtol`` or ``method`` (integrator options)
+    integrates all.
 ``"table"``
     tables only; lambda outside their range is a ValueError (never extrapolated).
 ``"scipy"``
-    direct integration for every lambda (``rtol``, ``method`` as in ``exact.solve``).
+    direct integration for every lambda (``rtol`` in [2.2e-14, 1), ``method`` one of
+    ``zener_sym.exact.solver.METHODS``, as in ``exact.solve``).
 ``"mpmath"``
-    high-precision integration (``dps``).
+    high-precision integration (``dps``, an integer in [15, 100]).
 
 ``contact_end``: ``"delta"`` (default, the plate: contact ends at delta = 0) or ``"force"`` (the
 viscoelastic-grain reading of Eq. (10): contact ends where delta^{3/2} + lambda (delta^{3/2})'
 vanishes; the force, impulse, F_m and int_F2 are then those of the grain contact, see
 :mod:`zener_sym.exact.force_end`). ``"force"`` has no tables: ``backend="auto"`` integrates with
 scipy, ``"table"`` is refused.
+
+Every option value is validated before any work (``exact.solver.check_options``,
+``exact.mp.check_dps``): a bad one is a ValueError naming the allowed values.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..exact import force_end as _force
+from ..exact import mp as _exact_mp
 from ..exact import solver as _exact
 from ..exact import table as _fast
 from .base import Model, register
@@ -34,8 +41,8 @@ BACKENDS = ("auto", "table", "scipy", "mpmath")
 
 class ExactModel(Model):
     name = "exact"
-    description = ("Zener's equation (10) solved exactly: Chebyshev tables for 0 <= lambda <= 5, "
-                   "direct integration otherwise")
+    description = ("Zener's equation (10) solved exactly: Chebyshev tables (summary for "
+                   "0 <= lambda <= 1000, history for 0 <= lambda <= 5), direct integration otherwise")
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m",
                       "impulse", "int_F2", "xi")
     history_fields = ("delta", "velocity", "force", "impulse")
@@ -43,8 +50,12 @@ class ExactModel(Model):
     bound_reason = "the range over which the integrator is tested"
     options = ("rtol", "method", "backend", "dps", "contact_end")
 
-    def _split(self, lam, options):
-        """Mask of lambda to take from the tables, and the options left for integration."""
+    def _split(self, lam, options, history=False):
+        """Mask of lambda to take from the tables, and the options left for integration.
+
+        The summary tables cover [0, 1000], the history tables [0, 5] (``history=True``)."""
+        in_range = _fast.history_in_range if history else _fast.in_range
+        top = _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
         options = dict(options)
         backend = options.pop("backend", "auto")
         end = _force.check_contact_end(options.get("contact_end", "delta"))
@@ -56,17 +67,26 @@ class ExactModel(Model):
                 backend = "scipy"
         else:
             options.pop("contact_end", None)
-        if backend not in BACKENDS:
+        if not isinstance(backend, str) or backend not in BACKENDS:
             raise ValueError(f"unknown backend {backend!r} for model 'exact'; allowed: "
                              f"{', '.join(BACKENDS)}")
+        # every option's value checked before any work (a NaN rtol used to hang scipy's loop)
+        if "rtol" in options or "method" in options:
+            rtol, _, method = _exact.check_options(rtol=options.get("rtol", 1e-12),
+                                                   method=options.get("method", "DOP853"))
+            options.update({k: v for k, v in (("rtol", rtol), ("method", method))
+                            if k in options})
+        if "dps" in options:
+            options["dps"] = _exact_mp.check_dps(options["dps"])
         if backend == "table":
             if options:
                 raise ValueError(f"option {sorted(options)[0]!r} does not go with backend='table'")
-            if not np.all(_fast.in_range(lam)):
-                bad = float(lam[~_fast.in_range(lam)].ravel()[0])
+            if not np.all(in_range(lam)):
+                bad = float(lam[~in_range(lam)].ravel()[0])
                 raise ValueError(
-                    f"lambda = {bad!r} is outside the exact table's range [{_fast.LAM_MIN:g}, "
-                    f"{_fast.LAM_MAX:g}]; use backend='auto' (integrates outside) or 'scipy'")
+                    f"lambda = {bad!r} is outside the exact {'history' if history else 'summary'}"
+                    f" table's range [{_fast.LAM_MIN:g}, {top:g}]; use backend='auto' "
+                    f"(integrates outside) or 'scipy'")
             return np.ones(lam.shape, bool), None
         if backend == "auto":
             if options.keys() & {"rtol", "method"}:
@@ -74,7 +94,7 @@ class ExactModel(Model):
             else:
                 if "dps" in options:
                     raise ValueError("option 'dps' goes with backend='mpmath'")
-                return _fast.in_range(lam), ("scipy", options)
+                return in_range(lam), ("scipy", options)
         return np.zeros(lam.shape, bool), (backend, options)
 
     def _solutions(self, lam_values, backend, options):
@@ -85,12 +105,10 @@ class ExactModel(Model):
                 raise ValueError("option 'dps' goes with backend='mpmath'")
             solve = _force.solve if force else _exact.solve
             return {float(x): solve(x, **options) for x in np.unique(lam_values)}
-        from ..exact import mp as exact_mp
-
         bad = set(options) - {"dps"}
         if bad:
             raise ValueError(f"option {sorted(bad)[0]!r} does not go with backend='mpmath'")
-        solve = _force.solve_mp if force else exact_mp.solve
+        solve = _force.solve_mp if force else _exact_mp.solve
         return {float(x): solve(x, **options) for x in np.unique(lam_values)}
 
     def _summary(self, lam, **options):
@@ -109,7 +127,10 @@ class ExactModel(Model):
         return out
 
     def _history(self, lam, tau, **options):
-        fast, rest = self._split(lam, options)
+        fast, rest = self._split(lam, options, history=True)
+        if fast.all():  # shapes kept (the table sees a broadcast lambda column as such)
+            v = _fast.history(lam, tau)
+            return {f: v[f] for f in self.history_fields}
         out = {f: np.empty(tau.shape) for f in self.history_fields}
         if fast.any():
             v = _fast.history(lam[fast], tau[fast])

@@ -1,0 +1,138 @@
+"""The exact model at the edges found by the independent review (issue 14, items 1-3).
+
+References are independent of the code under test: the mpmath Taylor-series path (exact/mp.py)
+at 30 digits, whose xi reference here is formed in the test as 1 - w_end^2 from its own state w
+(not the energy balance 2 lambda int F^2 that the scipy path now uses), and whose tau_dc comes
+from Newton's method on its Taylor polynomials of v = delta' (a separate state there).
+"""
+import multiprocessing as mp_proc
+
+import mpmath
+import numpy as np
+import pytest
+
+import zener_sym as zs
+from zener_sym.exact import mp as exact_mp
+from zener_sym.exact import solver
+
+
+@pytest.fixture(scope="module")
+def mp_refs():
+    lams = (1e-12, 1e-6, 1e-3, 0.7, 30.0)
+    return {x: exact_mp.solve(x, dps=30) for x in lams}
+
+
+def _xi_ref(r):
+    with mpmath.workdps(40):
+        return float(1 - r.w_end**2)
+
+
+@pytest.mark.parametrize("backend", ["scipy", "auto", "mpmath"])
+def test_xi_relative_accuracy_small_and_large_lambda(mp_refs, backend):
+    """Item 1: xi within 1e-10 relative on [1e-12, 1000] from every backend (the tables under
+    auto; lambda = 1000 in the slow test below)."""
+    for x, r in mp_refs.items():
+        opts = {"dps": 20} if backend == "mpmath" else {}
+        xi = zs.summary(x, model="exact", backend=backend, **opts).xi
+        assert abs(xi / _xi_ref(r) - 1) <= 1e-10, (x, xi, _xi_ref(r))
+
+
+@pytest.mark.parametrize("backend", ["auto", "table", "scipy", "mpmath"])
+def test_xi_exactly_zero_at_lambda_zero_and_never_negative(backend):
+    opts = {"backend": backend} | ({"dps": 20} if backend == "mpmath" else {})
+    assert zs.summary(0.0, model="exact", **opts).xi == 0.0
+    lams = np.array([0.0, 1e-300, 1e-15, 1e-9]) if backend != "mpmath" else np.array([1e-15])
+    xi = zs.summary(lams, model="exact", **opts).xi
+    assert np.all(xi >= 0.0)
+    assert np.all(xi[lams > 0] > 0.0)
+
+
+@pytest.mark.parametrize("lam", [13.7, pytest.param(100.0, marks=pytest.mark.slow)])
+def test_tau_dc_and_eta_at_large_lambda(lam):
+    """Item 2: tau_dc and eta within 1e-11 relative at large lambda (the review saw 3.5e-10 at
+    100 when v was formed as w - lambda delta^{3/2})."""
+    r = exact_mp.solve(lam, dps=30)
+    s = solver.solve(lam, rtol=1e-13)
+    for f in ("tau_dc", "eta", "tau_d", "delta_m", "e", "int_F2"):
+        assert abs(getattr(s, f) / float(getattr(r, f)) - 1) <= 1e-11, (f, lam)
+
+
+@pytest.fixture(scope="module")
+def mp_1000():
+    return exact_mp.solve(1000.0, dps=20)  # about a minute
+
+
+@pytest.mark.slow
+def test_lambda_1000_against_mpmath(mp_1000):
+    """Items 1 and 2 at the top of the range: tau_dc, eta and xi of the scipy path at
+    lambda = 1000 against the mpmath path (xi = 1 - e^2 = 1 - 4.6e-31 there)."""
+    r = mp_1000
+    s = solver.solve(1000.0, rtol=1e-13)
+    for f in ("tau_dc", "eta", "tau_d", "delta_m", "e", "int_F2"):
+        assert abs(getattr(s, f) / float(getattr(r, f)) - 1) <= 1e-11, (f, getattr(s, f))
+    assert abs(s.xi / _xi_ref(r) - 1) <= 1e-10
+    # and the summary table there (item 7; 1000 is no table node)
+    t = zs.summary(1000.0, model="exact")
+    for f in ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2",
+              "xi"):
+        assert abs(getattr(t, f) / float(getattr(r, f)) - 1) <= 1e-11, (f, getattr(t, f))
+
+
+BAD = [
+    ({"rtol": float("nan")}, "rtol"), ({"rtol": float("inf")}, "rtol"), ({"rtol": "a"}, "rtol"),
+    ({"rtol": None}, "rtol"), ({"rtol": 0}, "rtol"), ({"rtol": -1e-8}, "rtol"),
+    ({"rtol": 1e-20}, "rtol"), ({"rtol": 0.5}, "rtol"), ({"rtol": True}, "rtol"),
+    ({"method": "XYZ"}, "method"), ({"method": None}, "method"),
+    ({"backend": "mpmath", "dps": 10}, "dps"), ({"backend": "mpmath", "dps": 10**6}, "dps"),
+    ({"backend": "mpmath", "dps": 30.0}, "dps"), ({"backend": "mpmath", "dps": "30"}, "dps"),
+    ({"backend": ["scipy"]}, "backend"),
+]
+
+
+@pytest.mark.parametrize("opts,word", BAD)
+def test_bad_options_are_value_errors_naming_the_allowed_values(opts, word):
+    with pytest.raises(ValueError, match=word) as err:
+        zs.summary(np.array([0.5, 20.0]), model="exact", **opts)
+    msg = str(err.value)
+    assert any(tok in msg for tok in ("[", "one of", "allowed")), msg
+
+
+def test_solver_checks_its_own_options():
+    with pytest.raises(ValueError, match="atol"):
+        solver.solve(1.0, atol=float("nan"))
+    with pytest.raises(ValueError, match="atol"):
+        solver.solve(1.0, atol=0.0)
+    with pytest.raises(ValueError, match="method must be one of"):
+        solver.solve(1.0, method="rk45")
+
+
+def _worst_call(args):
+    lam, method, rtol = args
+    try:
+        solver.solve(lam, rtol=rtol, method=method)
+        return "ok"
+    except (RuntimeError, ValueError) as exc:  # a clear failure is acceptable; a hang is not
+        return type(exc).__name__
+
+
+def test_worst_options_finish_under_a_time_limit():
+    """Item 3: no option makes a call hang. The slowest accepted combinations (the lowest-order
+    method at the smallest rtol; the implicit methods) at lambda = 0 and 20 each end, with a
+    value or an error, within the limit (in a worker process, so a hang fails the test). The
+    evaluation budget grows with lambda; at 1000 the worst case (RK23) ends in about 30 s."""
+    cases = [(0.0, "RK23", solver.RTOL_MIN), (20.0, "RK23", solver.RTOL_MIN),
+             (20.0, "BDF", solver.RTOL_MIN), (0.0, "LSODA", solver.RTOL_MIN),
+             (20.0, "DOP853", solver.RTOL_MAX)]
+    ctx = mp_proc.get_context("spawn")
+    with ctx.Pool(1) as pool:
+        res = pool.map_async(_worst_call, cases)
+        out = res.get(timeout=120)
+    assert len(out) == len(cases)
+
+
+def test_evaluation_budget_stops_a_runaway_solve(monkeypatch):
+    """The budget that bounds every solve: with a tiny budget the solve stops with a
+    RuntimeError saying why."""
+    monkeypatch.setattr(solver, "eval_budget", lambda lam: 50)
+    with pytest.raises(RuntimeError, match="right-hand-side evaluations"):
+        solver.solve(1.0)

@@ -1,0 +1,121 @@
+"""Every model honours the Summary and History definitions (issue 14, item 6).
+
+F_m is the maximum of the force history the model gives; delta and the force are exactly 0 at
+and after the model's own tau_d, where the impulse keeps its summary value; the impulse histories
+of ham0, hunter and reed are checked against mpmath quadrature of the model's own force (an
+independent route: the models use closed forms or Chebyshev series); ``fields=`` is honoured.
+"""
+import mpmath
+import numpy as np
+import pytest
+
+import zener_sym as zs
+from zener_sym.models import REGISTRY, formulas as fm
+
+HISTORY_MODELS = ("exact", "hertz", "ham0", "ham1", "hunter", "reed")
+LAMS = (0.0, 0.3, 1.7, 2.4)
+
+
+@pytest.mark.parametrize("model", HISTORY_MODELS)
+@pytest.mark.parametrize("lam", LAMS)
+def test_F_m_is_the_maximum_of_the_force_history(model, lam):
+    s = zs.summary(lam, model=model)
+    tau = np.linspace(0.0, s.tau_d, 4001)
+    # the maximum sits at tau_dc for every model: refine around it
+    tau = np.concatenate([tau, s.tau_dc + np.linspace(-1e-3, 1e-3, 2001)])
+    f = zs.history(lam, tau, model=model).force
+    assert f.max() <= s.F_m * (1 + 1e-12)
+    assert f.max() >= s.F_m * (1 - 1e-9), (model, lam, f.max(), s.F_m)
+
+
+@pytest.mark.parametrize("model", HISTORY_MODELS)
+@pytest.mark.parametrize("lam", LAMS)
+def test_contact_over_at_and_after_tau_d(model, lam):
+    s = zs.summary(lam, model=model)
+    tau = s.tau_d * np.array([1.0, 1.0 + 1e-12, 1.001, 1.5, 10.0])
+    h = zs.history(lam, tau, model=model)
+    assert np.all(h.delta == 0.0), (model, lam, h.delta)
+    assert np.all(h.force == 0.0), (model, lam, h.force)
+    np.testing.assert_allclose(h.impulse, s.impulse, rtol=2e-12)
+    np.testing.assert_allclose(h.velocity, 1.0 - s.impulse, rtol=0, atol=2e-12)
+
+
+def _mp_impulse(force, t_end, pts):
+    """int_0^t force for t in pts, by mpmath tanh-sinh quadrature (30 digits)."""
+    with mpmath.workdps(30):
+        return np.array([float(mpmath.quad(force, [0, min(t, t_end)])) for t in pts])
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.9, 2.0, 2.4])
+def test_ham0_impulse_against_quadrature_of_its_force(lam):
+    with mpmath.workdps(30):
+        lam_mp = mpmath.mpf(lam)
+        k = (lam_mp + mpmath.mpf(5) / 4 ** (-mpmath.mpf(3) / 5) * 0 + (mpmath.mpf(5) / 4) ** (
+            -mpmath.mpf(3) / 5)) ** (-mpmath.mpf(1) / 3)
+        beta = k * lam_mp / 2
+        w0 = mpmath.sqrt(k - beta**2)  # Eq. (33), written from (25) and (32)
+
+        def F(t):
+            return (mpmath.exp(-beta * t) * mpmath.sin(w0 * t) / w0) ** 1.5
+
+        td = mpmath.pi / w0
+    s = zs.summary(lam, model="ham0")
+    pts = float(td) * np.array([0.05, 0.3, 0.5, 0.77, 0.999, 1.2])
+    ref = _mp_impulse(F, td, pts)
+    h = zs.history(lam, pts, model="ham0")
+    np.testing.assert_allclose(h.impulse, ref, rtol=2e-12, atol=1e-14)
+    assert s.impulse == pytest.approx(float(ref[-1]), rel=2e-12)
+
+
+@pytest.mark.parametrize("model", ["hunter", "reed"])
+def test_pulse_impulse_against_quadrature_of_its_force(model):
+    Om = fm.OMEGA_HUNTER
+    td = mpmath.pi / Om
+    if model == "hunter":
+        def F(t):
+            return fm.A_HUNTER * mpmath.sin(Om * t)
+    else:
+        def F(t):
+            return fm.A_REED * mpmath.sin(Om * t) ** 1.5
+    pts = float(td) * np.array([0.01, 0.25, 0.5, 0.5001, 0.9, 0.99999, 1.0, 2.0])
+    ref = _mp_impulse(F, td, pts)
+    h = zs.history(0.4, pts, model=model)
+    np.testing.assert_allclose(h.impulse, ref, rtol=1e-13, atol=1e-15)
+    # and the force itself is Eq. (52) / (53)
+    np.testing.assert_allclose(h.force[:-2], [float(F(t)) for t in pts[:-2]], rtol=1e-13)
+
+
+def test_reed_closed_form_integral():
+    from zener_sym.ham.quadrature import impulse_s
+
+    x = np.array([0.0, 0.3, np.pi / 2, np.pi / 2 + 1e-4, 2.0, np.pi])
+    with mpmath.workdps(30):
+        ref = [float(mpmath.quad(lambda t: mpmath.sin(t) ** 1.5, [0, v])) for v in x]
+    np.testing.assert_allclose(fm.int_sin32(x), ref, rtol=1e-14, atol=1e-16)
+    # the series reed's history evaluates, against the closed form on a fine grid
+    xs = np.linspace(0.0, np.pi, 2001)
+    np.testing.assert_allclose(impulse_s(np.zeros_like(xs), xs), fm.int_sin32(xs), rtol=0,
+                               atol=5e-14)
+
+
+@pytest.mark.parametrize("model", ["ham0", "hunter", "reed"])
+def test_fields_are_honoured(model):
+    m = REGISTRY[model]
+    lam = np.full((3, 4), 0.5)
+    tau = np.linspace(0.0, 3.0, 12).reshape(3, 4)
+    out = m.history_values(lam, tau, ("force",))
+    assert set(out) == {"force"}
+    raw = m._history(lam, tau, fields=("force",))
+    assert not set(raw) & {"impulse", "velocity"}  # no impulse work for a force
+    full = zs.history(lam, tau, model=model)
+    np.testing.assert_array_equal(out["force"], full.force)
+
+
+def test_ham0_series_impulse_matches_the_generated_kernel():
+    from zener_sym.generated import ham0_numpy as h0
+
+    lam = np.linspace(0.0, 2.43, 40)[:, None]
+    tau = np.linspace(0.0, 1.0, 50)[None, :] * h0.summary(lam)["tau_d"] * 1.1
+    h = zs.history(lam, tau, model="ham0")
+    ref = h0.impulse(np.broadcast_to(tau, h.impulse.shape), np.broadcast_to(lam, h.impulse.shape))
+    np.testing.assert_allclose(h.impulse, ref, rtol=2e-12, atol=1e-14)

@@ -11,9 +11,10 @@ import pytest
 from conftest import ROOT
 
 #: Public modules whose docstring examples are part of the documentation.
-DOCTEST_MODULES = ["zener_sym", "zener_sym.api", "zener_sym.scene.scene",
-                   "zener_sym.scene.compare", "zener_sym.scene.units",
-                   "zener_sym.scene.materials", "zener_sym.scene.select"]
+DOCTEST_MODULES = ["zener_sym", "zener_sym.api", "zener_sym.models.base", "zener_sym.scene.scene",
+                   "zener_sym.scene.compare", "zener_sym.scene.units", "zener_sym.scene.checks",
+                   "zener_sym.scene.materials", "zener_sym.scene.select",
+                   "zener_sym.scene.grains", "zener_sym.scene.lookup"]
 
 
 @pytest.mark.parametrize("name", DOCTEST_MODULES)
@@ -70,3 +71,54 @@ def test_readme_is_for_users():
     for link in re.findall(r"\]\(([^)#]+)\)", text):
         if not link.startswith("http"):
             assert (ROOT / link).exists(), link
+
+
+def test_readme_model_table_quotes_the_measured_envelopes():
+    """The 'Which model' table's numbers are the committed envelopes' maxima over lambda <= 2
+    (where each model answers), to the digits shown."""
+    from zener_sym.scene import envelopes
+
+    table = envelopes.load()
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    columns = ("e", "tau_d", "F_m", "force_history")
+    checked = 0
+    for line in text.splitlines():
+        m = re.match(r"^\| `(\w+)` \|[^|]*\|" + r"([^|]*)\|" * 4, line)
+        if not m or m.group(1) not in table["models"]:
+            continue
+        env = table["models"][m.group(1)]["envelopes"]
+        for q, cell in zip(columns, m.groups()[1:]):
+            cell = cell.strip()
+            num = re.fullmatch(r"([0-9.]+)(%|e-(\d+))", cell)
+            if not num:
+                continue  # a dash, "far off", a range
+            shown = float(num.group(1)) / 100 if num.group(2) == "%" else float(cell)
+            worst = max(v for (lo, hi), v in zip(table["intervals"], env[q])
+                        if hi <= 2.0 and v is not None)
+            mant = num.group(1)
+            mant = mant.replace(".", "").lstrip("0") if "." in mant else mant.strip("0")
+            digits = len(mant) or 1
+            assert float(f"{worst:.{digits}g}") == pytest.approx(shown, rel=1e-9), (line, q, worst)
+            checked += 1
+    assert checked >= 15
+
+
+def test_public_api_has_numpydoc_sections():
+    """Every public function of ``zener_sym`` documents Parameters, Returns, Raises and
+    Examples; every public class has Examples."""
+    import inspect
+
+    import zener_sym as zs
+
+    missing = []
+    for name in zs.__all__:
+        obj = getattr(zs, name)
+        doc = inspect.getdoc(obj) or ""
+        if inspect.isfunction(obj):
+            need = ("Parameters", "Returns", "Raises", "Examples")
+        elif inspect.isclass(obj):
+            need = ("Examples",)
+        else:
+            continue
+        missing += [f"{name}: {s}" for s in need if f"\n{s}\n" not in "\n" + doc]
+    assert not missing, missing

@@ -142,20 +142,20 @@ def test_grain_impact_against_si_integration(end):
     assert r.contact_end == end and ("force" in r.criterion) == (end == "force")
     e, tc, Fm = _si_integration(r.m_eff, r.rho, 3e-7, 2.0, end)
     assert abs(r.e - e) < 1e-6 * e
-    assert abs(r.contact_time - tc) < 1e-6 * tc
-    assert abs(r.max_force - Fm) < 1e-6 * Fm
-    assert r.t[-1] == pytest.approx(r.contact_time) and r.force.shape == r.t.shape
-    assert abs(r.force.max() - Fm) < 1e-3 * Fm  # the sampled history reaches the peak
+    assert abs(r.contact_duration_s - tc) < 1e-6 * tc
+    assert abs(r.max_force_N - Fm) < 1e-6 * Fm
+    assert r.t_s[-1] == pytest.approx(r.contact_duration_s) and r.force_N.shape == r.t_s.shape
+    assert abs(r.force_N.max() - Fm) < 1e-3 * Fm  # the sampled history reaches the peak
     if end == "delta":
-        assert r.force[-3] < 0  # the attractive tail the grains' criterion cuts off
+        assert r.force_N[-3] < 0  # the attractive tail the grains' criterion cuts off
     else:
-        assert np.all(r.force[:-1] >= -1e-9 * Fm)
+        assert np.all(r.force_N[:-1] >= -1e-9 * Fm)
 
 
 def test_grain_impact_wall_and_bad_input():
     rigid = zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0)
     soft = zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, wall="glass")
-    assert rigid.E_star > soft.E_star and rigid.contact_time < soft.contact_time
+    assert rigid.E_star > soft.E_star and rigid.contact_duration_s < soft.contact_duration_s
     with pytest.raises(ValueError, match="A .*allowed: 0 < A"):
         zs.grain_impact(1e-3, 1e-5, "glass", -1e-7, 1.0)
     with pytest.raises(ValueError, match="v0 .*allowed"):

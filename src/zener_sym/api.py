@@ -60,6 +60,29 @@ class Summary(_Fields):
     -delta'(tau_d)), F_m (maximum of the model's force history: delta_m^{3/2} where the force is
     delta^{3/2}, Hunter's amplitude for hunter), impulse (I at tau_d, Eq. 47), int_F2 (integral of F^2
     over the contact, Eq. 76), xi = 2 I - I^2 (Eq. 69).
+
+    Made by :func:`summary`; a field is a float for a scalar lambda and an array of lambda's
+    shape otherwise. A field the model cannot give raises ``FieldUnavailableError``.
+
+    Attributes
+    ----------
+    model : str
+        The model that computed it.
+    fields : tuple of str
+        The fields this model gave, in table order.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> s = zs.summary(0.5)
+    >>> s.model, round(s.e, 4), round(s.xi, 4)
+    ('exact', 0.4369, 0.8091)
+    >>> round(s.impulse - (1 + s.e), 12)       # the exact model's impulse is 1 + e
+    0.0
+    >>> zs.summary(0.5, model="hunter").e
+    Traceback (most recent call last):
+    ...
+    zener_sym.models.base.FieldUnavailableError: model 'hunter' does not give the summary field 'e'; it gives: lam, delta_m, tau_dc, tau_d, tau_dr, eta, F_m, impulse, int_F2
     """
 
     _all = SUMMARY_FIELDS
@@ -70,7 +93,26 @@ class History(_Fields):
     """Dimensionless histories on a time grid: tau, delta, velocity (sphere, 1 - I, Eq. 64),
     force (the model's contact force: delta^{3/2}, Eq. 45, for all but hunter's sine, Eq. 52),
     impulse (Eq. 47; also the plate deflection w-bar, Eq. 66). From the model's tau_d on, delta
-    and the force are exactly 0 and the impulse keeps its final value."""
+    and the force are exactly 0 and the impulse keeps its final value.
+
+    Made by :func:`history`; every field has the broadcast shape of lambda and tau.
+
+    Attributes
+    ----------
+    model : str
+        The model that computed it.
+    fields : tuple of str
+        ``tau`` and the history fields computed.
+
+    Examples
+    --------
+    >>> import numpy as np, zener_sym as zs
+    >>> h = zs.history(0.5, np.linspace(0.0, 4.0, 5))
+    >>> h.fields
+    ('tau', 'delta', 'velocity', 'force', 'impulse')
+    >>> bool(np.all(h.deflection == h.impulse))      # the plate deflection is the impulse
+    True
+    """
 
     _all = ("tau",) + HISTORY_FIELDS
     _kind = "history"

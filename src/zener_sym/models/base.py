@@ -14,7 +14,17 @@ HISTORY_FIELDS = ("delta", "velocity", "force", "impulse")
 
 
 class FieldUnavailableError(ValueError):
-    """A model was asked for a quantity it cannot give."""
+    """A model was asked for a quantity it cannot give (a ``ValueError``).
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> try:
+    ...     zs.summary(0.1, model="reed").e
+    ... except zs.FieldUnavailableError as exc:
+    ...     print(exc)
+    model 'reed' does not give the summary field 'e'; it gives: lam, delta_m, tau_dc, tau_d, tau_dr, eta, F_m, impulse, int_F2
+    """
 
 
 class Model:

@@ -42,7 +42,20 @@ __all__ = ["ZenerWarning", "HAM_LAMBDA_BOUND", "ham_k", "ham_lambda_bound", "sta
 
 
 class ZenerWarning(UserWarning):
-    """A scene lies outside (or at the edge of) the assumptions of Zener's model or the HAM."""
+    """A scene lies outside (or at the edge of) the assumptions of Zener's model or the HAM.
+
+    Issued by :meth:`Scene.result` (also listed in the result's table and ``warnings``).
+
+    Examples
+    --------
+    >>> import warnings, zener_sym as zs
+    >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="0.25 mm", v0="5 m/s")
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     r = sc.summary()
+    >>> any(issubclass(w.category, zs.ZenerWarning) for w in caught)
+    True
+    """
 
 
 THICK_RATIO = 0.2   # 2R/H below which the plate acts as a half-space (Koller & Kolsky 1987)

@@ -48,6 +48,15 @@ class Comparison:
     quantities : tuple of str
     rows : list of ComparisonRow
         The exact model first, then the others in registry order.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> c = zs.compare(0.5, models=["hertz"], quantities=["tau_d"])
+    >>> len(c), c["hertz"].tau_d > c["exact"].tau_d * 0.5
+    (2, True)
+    >>> print(c.to_markdown().splitlines()[2])
+    | model | tau_d |
     """
 
     def __init__(self, lam: float, quantities: tuple, rows: list, units: dict):

@@ -91,6 +91,12 @@ def viscoelastic_lambda(A, rho, m_eff, v0):
     ------
     ValueError
         Naming the input that is not finite and > 0.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> round(zs.viscoelastic_lambda(A=1e-6, rho=1e9, m_eff=1e-5, v0=1.0), 6)
+    0.398107
     """
     A_ = _pos_array(A, "A", "s", "dissipative constant")
     r_ = _pos_array(rho, "rho", "N/m^(3/2)", "Hertz constant (4/3) E* sqrt(R_eff)")
@@ -114,35 +120,47 @@ class GrainImpact:
         The end-of-contact criterion in words.
     e : float
         Coefficient of restitution (normal relative velocity after / before).
-    contact_time : float
+    contact_duration_s : float
         Duration of the contact [s].
-    max_force : float
+    max_force_N : float
         Peak of the viscoelastic contact force rho (xi^{3/2} + A (xi^{3/2})') [N]; it comes
         before the end of compression, so it is the same for both criteria.
-    max_compression : float
+    max_compression_m : float
         Largest mutual compression xi [m].
     T, m_eff, rho, R_eff, E_star : float
         Time scale [s], effective mass [kg], Hertz constant [N/m^{3/2}], effective radius [m],
         effective modulus [Pa].
-    t, force : numpy.ndarray
+    t_s, force_N : numpy.ndarray
         History of the viscoelastic contact force [s], [N] at ``n_history`` times from 0 to the
         end of contact (with ``"delta"`` it turns negative, attractive, before the end).
+
+    Field names follow :class:`~zener_sym.scene.scene.SceneResult`: dimensionless ones as in
+    ``Summary``, SI ones with their unit in the name.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> r = zs.grain_impact("1 mm", 1e-5, "glass", A=1e-6, v0="1 m/s")
+    >>> r.contact_end, round(r.lam, 4), round(r.e, 4)
+    ('force', 0.6355, 0.4079)
+    >>> f"{r.contact_duration_s * 1e6:.3f} us"
+    '4.356 us'
     """
 
     lam: float
     contact_end: str
     criterion: str
     e: float
-    contact_time: float
-    max_force: float
-    max_compression: float
+    contact_duration_s: float
+    max_force_N: float
+    max_compression_m: float
     T: float
     m_eff: float
     rho: float
     R_eff: float
     E_star: float
-    t: np.ndarray = field(repr=False)
-    force: np.ndarray = field(repr=False)
+    t_s: np.ndarray = field(repr=False)
+    force_N: np.ndarray = field(repr=False)
 
 
 _CRITERIA = {"force": "contact ends where the viscoelastic force rho (xi^3/2 + A d/dt xi^3/2) "
@@ -178,6 +196,14 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
     Returns
     -------
     GrainImpact
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> r = zs.grain_impact("1 mm", 1e-5, "steel", A=2e-6, v0="2 m/s", R2="1 mm", m2=1e-5,
+    ...                     material2="steel")
+    >>> r.criterion.startswith("contact ends where the viscoelastic force")
+    True
 
     Raises
     ------
@@ -231,6 +257,6 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
         fc = np.sqrt(d) * (d + 1.5 * lam * v)
     F_scale = m_eff * v0 / T
     return GrainImpact(lam=lam, contact_end=contact_end, criterion=_CRITERIA[contact_end], e=s.e,
-                       contact_time=T * s.tau_d, max_force=F_scale * F_m,
-                       max_compression=v0 * T * s.delta_m, T=T, m_eff=m_eff, rho=rho, R_eff=R_eff,
-                       E_star=E_star, t=T * tau, force=F_scale * fc)
+                       contact_duration_s=T * s.tau_d, max_force_N=F_scale * F_m,
+                       max_compression_m=v0 * T * s.delta_m, T=T, m_eff=m_eff, rho=rho,
+                       R_eff=R_eff, E_star=E_star, t_s=T * tau, force_N=F_scale * fc)

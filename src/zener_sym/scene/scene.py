@@ -292,6 +292,15 @@ class SceneResult:
 
     A field the model cannot give is None (a model chosen by ``select_model`` with quantity
     "all" gives them all).
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+    >>> r.e == r.summary.e, r.rebound_speed_m_s == r.e * r.scene.v0
+    (True, True)
+    >>> f"{r.contact_duration_s * 1e6:.3f} us"
+    '9.294 us'
     """
 
     scene: Scene

@@ -21,7 +21,22 @@ ALL_QUANTITIES = ("tau_d", "F_m", "delta_m", "e", "xi", "impulse")
 
 @dataclass(frozen=True)
 class Selection:
-    """The chosen model, why, and the envelope that decided it (None for the fallback)."""
+    """The chosen model, why, and the envelope that decided it (None for the fallback).
+
+    Attributes
+    ----------
+    model : str
+    reason : str
+    envelope : float or None
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> sel = zs.select_model(0.3, "tau_d", 0.5)
+    >>> sel.model in zs.MODELS and "rtol" in sel.reason
+    True
+    >>> model, reason = sel                     # unpacks as a pair
+    """
 
     model: str
     reason: str

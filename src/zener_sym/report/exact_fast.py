@@ -29,8 +29,9 @@ def section() -> str:
         best = min(best, time.perf_counter() - t0)
     return (
         "## Fast exact model (Chebyshev tables)\n\n"
-        f"Default of `model=\"exact\"` for {exact_fast.LAM_MIN:g} <= lambda <= "
-        f"{exact_fast.LAM_MAX:g}; integration outside. Documented bounds: summary fields "
+        f"Default of `model=\"exact\"`: summaries for {exact_fast.LAM_MIN:g} <= lambda <= "
+        f"{exact_fast.LAM_MAX:g}, histories for lambda <= {exact_fast.HISTORY_LAM_MAX:g} "
+        "(histories beyond are integrated). Documented bounds: summary fields "
         f"{exact_fast.SUMMARY_RTOL:g} relative, history {exact_fast.HISTORY_ATOL:g} of each "
         "field's scale. Live check against the scipy solver at rtol 1e-13 (worst relative error "
         "of delta_m, tau_dc, tau_d, e, int_F2):\n\n"

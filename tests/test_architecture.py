@@ -142,6 +142,7 @@ def test_the_reader_sees_the_modules():
     assert "zener_sym.exact.solver" in GRAPH["zener_sym.models.exact"]  # from ..exact import solver
     assert "zener_sym.ham.quadrature" in GRAPH["zener_sym.generated.ham0_numpy"]  # absolute
     assert "zener_sym.generated.exact_table" in GRAPH["zener_sym.exact.table"]  # importlib
+    assert "zener_sym.generated.ham1_table" in GRAPH["zener_sym.ham.table"]  # importlib
     assert "zener_sym.derivation.registry" in GRAPH["zener_sym.cli.derive"]  # inside a function
 
 

@@ -169,7 +169,9 @@ def test_summary_matches_the_quadrature_kernels(series):
     np.testing.assert_allclose(got["e"], ref["e"], rtol=0, atol=2e-14)
 
 
-def test_summary_through_the_api_falls_back_near_the_critical_lambda():
+def test_summary_through_the_api_matches_the_kernels_up_to_the_critical_lambda():
+    """The api's summary (the ham1 tables, built from this module's series and, from 2.414 on,
+    the kernels) against the quadrature kernels, also where the series fall back."""
     lam = np.array([0.5, 2.3, 2.43, 2.442])
     s = zs.summary(lam, model="ham1")
     ref = h1.summary(lam)

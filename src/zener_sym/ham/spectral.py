@@ -38,7 +38,7 @@ import numpy as np
 
 from . import chebyshev as hn
 
-__all__ = ["Ham1Series", "rows_of", "N_GLOBAL", "N_PIECES", "N_LOCAL", "A_MAX", "TAIL_TOL",
+__all__ = ["Ham1Series", "rows_of", "summary_numpy", "N_GLOBAL", "N_PIECES", "N_LOCAL", "A_MAX", "TAIL_TOL",
            "SPAN_PAST"]
 
 _C = np.polynomial.chebyshev
@@ -347,3 +347,19 @@ def rows_of(lam):
     u, inv = np.unique(lam, return_inverse=True)
     return u, inv.reshape(lam.shape)
 
+
+def summary_numpy(lam) -> dict:
+    """ham1 summary in float64 (tau_dc, delta_m, tau_d, e, F_m, impulse, int_F2) from the
+    per-lambda series, and from the quadrature kernels (``ham1_numpy.summary``) for the lambda
+    values whose series fail their check (from lambda = 2.414 on). Same shape as ``lam``.
+
+    This is the reference the ham1 summary table (:mod:`zener_sym.ham.table_build`) samples.
+    """
+    u, rows = rows_of(lam)
+    v = Ham1Series(u).summary()
+    slow = np.isnan(v["tau_d"])
+    if slow.any():
+        k = _h1().summary(u[slow])
+        for f in v:
+            v[f][slow] = k[f]
+    return {f: x[rows] for f, x in v.items()}

@@ -121,7 +121,8 @@ class Ham0(_HamModel):
 class Ham1(_HamModel):
     name = "ham1"
     description = ("first-order HAM solution, Eq. (42): delta0 + delta1, contact end by root "
-                   "finding, impulse by quadrature of the force (per-lambda Chebyshev series)")
+                   "finding, impulse by quadrature of the force (per-lambda Chebyshev series; "
+                   "summary from Chebyshev tables in lambda)")
 
     def _summary(self, lam, **options):
         backend, dps = _backend(options)
@@ -170,18 +171,22 @@ class Ham1(_HamModel):
 
 
 def _ham1_summary_numpy(h1, lam):
-    """ham1 summary in float64 from the per-lambda series (``zener_sym.ham.spectral``), and
-    from the quadrature kernels for the lambda values whose series fail their check."""
+    """ham1 summary in float64: the Chebyshev tables in lambda (``zener_sym.ham.table``, relative
+    error below ``table.SUMMARY_RTOL``) where they cover lambda, which is all of
+    0 <= lambda < lam_crit; elsewhere the per-lambda series of ``zener_sym.ham.spectral``, with the
+    quadrature kernels for the lambda values whose series fail their check."""
     from ..ham import spectral as ham1_spectral
+    from ..ham import table as ham1_table
 
-    u, rows = ham1_spectral.rows_of(lam)
-    v = ham1_spectral.Ham1Series(u).summary()
-    slow = np.isnan(v["tau_d"])
-    if slow.any():
-        k = h1.summary(u[slow])
-        for f in v:
-            v[f][slow] = k[f]
-    return {f: x[rows] for f, x in v.items()}
+    fast = ham1_table.in_range(lam)
+    if fast.all():
+        return ham1_table.summary(lam)
+    out = ham1_spectral.summary_numpy(lam)
+    if fast.any():
+        v = ham1_table.summary(lam[fast])
+        for f in out:
+            out[f][fast] = v[f]
+    return out
 
 
 def _ham1_history_numpy(h1, lam, tau, want):

@@ -1,0 +1,215 @@
+"""Offline builder of the Chebyshev tables behind the ham1 summary (``generated/ham1_table.py``).
+
+The first-order HAM summary (Eq. 42: delta_m, tau_dc, tau_d, e, impulse, int_F2; the other
+fields follow from these) is sampled from its float64 reference, :func:`zener_sym.ham.spectral.
+summary_numpy` (the per-lambda series, and the quadrature kernels from lambda = 2.414 on; both
+agree with the mpmath closed forms to ~1e-13), at Chebyshev points of the first kind on each
+lambda piece, and stored as Chebyshev coefficients (17 significant digits), trimmed where the
+trailing ones fall below ``TRIM`` of the largest. :mod:`zener_sym.ham.table` evaluates them.
+
+The pieces follow the singularities of the summary in lambda:
+
+``[0, 1]``, ``[1, lam_cont]`` in lambda
+    On both the first-order contact ends past pi/omega0, on the continuation of Eq. (42) with
+    K frozen at pi (see :mod:`zener_sym.models.ham`), where delta is analytic in tau: every field
+    is analytic in lambda.
+``[lam_cont, lam_crit]`` in the variable s = sqrt(lambda - lam_cont)
+    At lam_cont = 2.0304532806... the end of contact tau_d meets pi/omega0. Just above it,
+    tau_d < pi/omega0, where delta has a (pi/omega0 - tau)^{3/2} term (the square-root
+    integrals K of Eq. 36 end there), so tau_d and e carry a (lambda - lam_cont)^{3/2} term:
+    Chebyshev series in lambda converge only algebraically, in s they converge geometrically.
+    lam_cont is found at build time by root finding on tau_d - pi/omega0 and stored in the
+    table. Up to lam_crit = 2.44243892998... (omega0 -> 0, Eq. 81) nothing else is singular:
+    tau_d stays near 11 there (the first-order contact ends well before pi/omega0), so the
+    piece reaches lam_crit itself (its nodes never touch it).
+
+tau_d and e are tabulated as their logarithms (relative accuracy: e falls to 1.4e-3).
+
+The node values come from floating-point root finding and quadrature, so the text is not meant
+to be bit-reproducible across machines: the table is NOT in ``codegen.BUILDERS``;
+``zener-sym ham1-table --check`` rebuilds it and compares numerically (``CHECK_RTOL``).
+"""
+from __future__ import annotations
+
+import hashlib
+import pathlib
+
+import numpy as np
+
+#: Chebyshev points per lambda piece (first the two pieces in lambda, then the one in s).
+N_NODES = (28, 28, 36)
+#: The two pieces in lambda end here, the piece in s = sqrt(lambda - lam_cont) starts at lam_cont.
+LAM_SPLIT = 1.0
+#: Bracket of lam_cont, where the first-order tau_d equals pi/omega0.
+CONT_BRACKET = (2.0, 2.1)
+#: Trailing coefficients below this fraction of an array's largest are dropped (noise level).
+TRIM = 1e-15
+#: ``--check`` passes when every rebuilt coefficient is within this of the stored one (relative
+#: to the largest coefficient of its array), and lam_cont within this relative.
+CHECK_RTOL = 1e-12
+
+#: The tabulated functions of lambda; tau_d = exp(log_tau_d), e = exp(log_e).
+KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
+#: Kinds of Chebyshev variable: lambda itself, or sqrt(lambda - start of the piece).
+KINDS = ("lam", "sqrt")
+
+
+def cheb_nodes(n: int) -> np.ndarray:
+    """Chebyshev points of the first kind, x_k = cos(pi (k + 1/2) / n), k = 0..n-1."""
+    return np.cos(np.pi * (np.arange(n) + 0.5) / n)
+
+
+def cheb_coefficients(values: np.ndarray) -> np.ndarray:
+    """Coefficients of the interpolant through values at ``cheb_nodes(n)`` (DCT-II)."""
+    values = np.asarray(values, dtype=float)
+    n = values.shape[0]
+    k = np.arange(n)
+    m = np.cos(np.pi * np.outer(k, k + 0.5) / n) * (2.0 / n)
+    m[0] *= 0.5
+    return m @ values
+
+
+def lam_crit() -> float:
+    from ..generated import ham1_numpy
+
+    return float(ham1_numpy.LAM_CRIT)
+
+
+def reference(lam) -> dict:
+    """The float64 reference the table samples: the six tabulated functions at ``lam``."""
+    from .spectral import summary_numpy
+
+    v = summary_numpy(np.atleast_1d(np.asarray(lam, dtype=float)))
+    return {"delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "log_tau_d": np.log(v["tau_d"]),
+            "log_e": np.log(v["e"]), "impulse": v["impulse"], "int_F2": v["int_F2"]}
+
+
+def continuation_lambda() -> float:
+    """lam_cont: the lambda where the first-order end of contact tau_d equals pi/omega0
+    (below it tau_d > pi/omega0). Brent's method on the reference, to full precision."""
+    from scipy.optimize import brentq
+
+    from ..generated import ham1_numpy
+
+    def g(x):
+        return float(np.exp(reference(x)["log_tau_d"][0])) - float(np.pi / ham1_numpy.params(x)[2])
+
+    return float(brentq(g, *CONT_BRACKET, xtol=1e-16, rtol=8.9e-16, maxiter=200))
+
+
+def pieces(lam_cont: float) -> list[tuple[str, float, float]]:
+    """(kind, start, end) of every lambda piece."""
+    return [("lam", 0.0, LAM_SPLIT), ("lam", LAM_SPLIT, lam_cont), ("sqrt", lam_cont, lam_crit())]
+
+
+def variable_ends(kind: str, a: float, b: float) -> tuple[float, float]:
+    """The Chebyshev variable's ends on the piece [a, b]."""
+    return (a, b) if kind == "lam" else (0.0, float(np.sqrt(b - a)))
+
+
+def piece_nodes(kind: str, a: float, b: float, n: int) -> np.ndarray:
+    """The lambda nodes of a piece: Chebyshev points in its variable."""
+    ga, gb = variable_ends(kind, a, b)
+    g = ga + (gb - ga) * (cheb_nodes(n) + 1.0) / 2.0
+    return g if kind == "lam" else a + g * g
+
+
+def _trim(c: np.ndarray) -> np.ndarray:
+    big = np.abs(c) > TRIM * np.abs(c).max()
+    return c[: np.nonzero(big)[0].max() + 1]
+
+
+def build_tables() -> dict:
+    """{"lam_cont": float, "pieces": [(kind, a, b)], "coef": {key: [1-D per piece]}}."""
+    lam_cont = continuation_lambda()
+    ps = pieces(lam_cont)
+    coef = {k: [] for k in KEYS}
+    for (kind, a, b), n in zip(ps, N_NODES):
+        v = reference(piece_nodes(kind, a, b, n))
+        for k in KEYS:
+            if not np.all(np.isfinite(v[k])):
+                raise RuntimeError(f"ham1 reference gave a non-finite {k} on the piece [{a}, {b}]")
+            coef[k].append(_trim(cheb_coefficients(v[k])))
+    return {"lam_cont": lam_cont, "pieces": ps, "coef": coef}
+
+
+def inputs_hash() -> str:
+    """SHA-256 (16 hex digits) of this builder, the reference it samples (``spectral``, the
+    ``chebyshev`` and ``quadrature`` helpers) and the generated ham1 kernels."""
+    here = pathlib.Path(__file__).resolve().parent
+    from ..codegen import generated_dir
+
+    files = [here / n for n in ("table_build.py", "spectral.py", "chebyshev.py", "quadrature.py")]
+    files.append(generated_dir() / "ham1_numpy.py")
+    h = hashlib.sha256()
+    for f in files:
+        h.update(f.name.encode())
+        h.update(f.read_bytes().replace(b"\r\n", b"\n"))
+    return h.hexdigest()[:16]
+
+
+def _fmt(a) -> str:
+    return "(" + ", ".join(f"{float(v):.17g}" for v in a) + ",)"
+
+
+def render(tables: dict | None = None) -> str:
+    """Text of ``generated/ham1_table.py``."""
+    t = build_tables() if tables is None else tables
+    h = inputs_hash()
+    lines = [
+        '"""Chebyshev tables of the first-order HAM summary (Eq. 42) for 0 <= lambda < lam_crit.\n',
+        "GENERATED by `zener-sym ham1-table`: DO NOT EDIT. Built by zener_sym.ham.table_build from",
+        "the float64 ham1 summary (zener_sym.ham.spectral.summary_numpy); `zener-sym ham1-table",
+        "--check` rebuilds and compares numerically (the node values come from floating-point root",
+        "finding and quadrature).\n",
+        f"Inputs hash: {h}",
+        '"""',
+        f"INPUTS_HASH = {h!r}",
+        "#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
+        f"LAM_CONT = {float(t['lam_cont']):.17g}",
+        "#: (kind, start, end) per lambda piece; kind 'lam': Chebyshev variable lambda,",
+        "#: 'sqrt': sqrt(lambda - start)",
+        "PIECES = (",
+    ]
+    for kind, a, b in t["pieces"]:
+        lines.append(f"    ({kind!r}, {float(a):.17g}, {float(b):.17g}),")
+    lines += [")", "", "#: field -> one tuple of Chebyshev coefficients per lambda piece", "COEF = {"]
+    for k in KEYS:
+        lines.append(f"    {k!r}: (")
+        for c in t["coef"][k]:
+            lines.append("        " + _fmt(c) + ",")
+        lines.append("    ),")
+    lines += ["}", ""]
+    return "\n".join(lines)
+
+
+def table_path() -> pathlib.Path:
+    from ..codegen import generated_dir
+
+    return generated_dir() / "ham1_table.py"
+
+
+def compare(stored: dict, fresh: dict) -> list[str]:
+    """Differences beyond CHECK_RTOL between two tables, as readable lines (empty: they agree).
+
+    ``stored`` has the generated module's names: LAM_CONT, PIECES, COEF."""
+    bad = []
+    if abs(stored["LAM_CONT"] - fresh["lam_cont"]) > CHECK_RTOL * fresh["lam_cont"]:
+        bad.append(f"lam_cont {stored['LAM_CONT']!r} != rebuilt {fresh['lam_cont']!r}")
+    if [p[0] for p in stored["PIECES"]] != [p[0] for p in fresh["pieces"]] or len(
+            stored["PIECES"]) != len(fresh["pieces"]):
+        bad.append(f"pieces {stored['PIECES']!r} != rebuilt {fresh['pieces']!r}")
+        return bad
+    for key in fresh["coef"]:
+        if key not in stored["COEF"]:
+            bad.append(f"field {key} missing from the stored table")
+            continue
+        for i, (c_new, c_old) in enumerate(zip(fresh["coef"][key], stored["COEF"][key])):
+            c_old = np.asarray(c_old, dtype=float)
+            n = max(c_new.size, c_old.size)
+            a, b = np.zeros(n), np.zeros(n)
+            a[: c_new.size], b[: c_old.size] = c_new, c_old
+            err = np.abs(a - b).max() / np.abs(a).max()
+            if not err <= CHECK_RTOL:
+                bad.append(f"{key} lambda piece {i}: relative difference {err:.2e} > {CHECK_RTOL:g}")
+    return bad

@@ -101,3 +101,13 @@ def test_check_command_passes_and_detects_a_change(monkeypatch, capsys):
     monkeypatch.setattr(ham1_table, "COEF", coef)
     assert cmd.run(check=True) == 1
     assert "tau_dc lambda piece 1" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("lam", (0.5, 2.2, 2.42))
+def test_history_ends_at_the_summary_tau_d(lam):
+    """The history's contact ends at the tabulated tau_d (series rows and, at 2.42, kernel rows):
+    delta is 0 from there on and positive just before; the impulse there is the summary's."""
+    s = zs.summary(lam, model="ham1")
+    h = zs.history(lam, s.tau_d * np.array([1 - 1e-9, 1.0, 1.0 + 1e-12]), model="ham1")
+    assert h.delta[0] > 0 and h.delta[1] == 0 and h.delta[2] == 0
+    np.testing.assert_allclose(h.impulse[1:], s.impulse, rtol=1e-12)

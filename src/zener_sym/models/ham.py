@@ -192,11 +192,20 @@ def _ham1_summary_numpy(h1, lam):
 def _ham1_history_numpy(h1, lam, tau, want):
     """ham1 histories in float64: the per-lambda Chebyshev series of ``zener_sym.ham.spectral``,
     and the quadrature kernels for the lambda values whose series fail their own check (near
-    the critical lambda)."""
+    the critical lambda).
+
+    The contact ends at the summary's tau_d (the ham1 tables, within 1e-14 of the series' own
+    root), so that the history is exactly 0 from the summary's tau_d on."""
     from ..ham import spectral as ham1_spectral
+    from ..ham import table as ham1_table
 
     u, rows = ham1_spectral.rows_of(lam)
     series = ham1_spectral.Ham1Series(u)
+    tab = ham1_table.in_range(u)
+    td_tab = np.full(u.shape, np.nan)
+    if tab.any():
+        td_tab[tab] = ham1_table.summary(u[tab])["tau_d"]
+    series.tau_d = np.where(series.ok & tab, td_tab, series.tau_d)
     out = {}
     need_imp = bool(want & {"impulse", "velocity"})
     if want & {"delta", "force"}:
@@ -207,7 +216,11 @@ def _ham1_history_numpy(h1, lam, tau, want):
     if not series.ok.all():
         slow = ~series.ok.take(rows)
         lam_s, tau_s = lam[slow], tau[slow]
-        td = h1.contact_end(u[~series.ok])[np.searchsorted(u[~series.ok], lam_s)]
+        u_s = u[~series.ok]
+        td_s = np.where(tab[~series.ok], td_tab[~series.ok], np.nan)
+        if np.isnan(td_s).any():
+            td_s[np.isnan(td_s)] = h1.contact_end(u_s[np.isnan(td_s)])
+        td = td_s[np.searchsorted(u_s, lam_s)]
         if want & {"delta", "force"}:
             ds = np.where(tau_s < td, np.maximum(h1.delta(tau_s, lam_s), 0.0), 0.0)
             out["delta"][slow], out["force"][slow] = ds, ds * np.sqrt(ds)

@@ -16,7 +16,7 @@ import pytest
 
 import zener_sym as zs
 from zener_sym.bench.methods import naive_solve
-from zener_sym.bench.targets import dop853_force_loop
+from zener_sym.bench.methods import dop853_force_loop
 from zener_sym.models import REGISTRY
 
 LAMS = np.linspace(0.0, 2.4, 200)

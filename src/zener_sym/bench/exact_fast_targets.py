@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..exact import solver as exact
+from .methods import dop853_force_loop
 from .timing import median_time
 
 
@@ -45,21 +46,6 @@ def history_target(m: int = 200, k: int = 200, quick: bool = False) -> dict:
             "fast_s": t_fast, "slow_s": t_loop, "ratio": t_loop / t_fast, "required": 20.0}
 
 
-def _dop853_force_loop(lams, tau, rtol):
-    """Per lambda a scipy DOP853 solve with dense output (``methods.naive_solve``: tau from 0,
-    guarded right-hand side, event delta = 0), the force on that row of ``tau`` (the comparator
-    of ``bench.targets``, which imports this module, so it is not imported from there)."""
-    from .methods import naive_solve
-
-    out = np.empty_like(tau)
-    for i, lam in enumerate(lams):
-        summ, sol = naive_solve(lam, rtol, "DOP853", dense=True)
-        t = tau[i]
-        d = np.maximum(sol.sol(np.minimum(t, summ["tau_d"]))[0], 0.0)
-        out[i] = np.where(t < summ["tau_d"], d**1.5, 0.0)
-    return out
-
-
 def history_vs_dop853_target(m: int = 200, k: int = 500, quick: bool = False) -> dict:
     """Issue 14: exact histories (tables) on m lambda in [0, 5] x k tau against a per-lambda scipy
     DOP853 solve with dense output at rtol 1e-10 (the textbook set-up of ``bench.targets``:
@@ -71,7 +57,7 @@ def history_vs_dop853_target(m: int = 200, k: int = 500, quick: bool = False) ->
     sub = np.arange(0, m, 1 if not quick else 10)
     t_fast = median_time(lambda: zs.history(lams[:, None], tau, model="exact").force,
                          min_repeats=3, min_total=0.2)
-    t_loop = median_time(lambda: _dop853_force_loop(lams[sub], tau[sub], rtol=1e-10),
+    t_loop = median_time(lambda: dop853_force_loop(lams[sub], tau[sub], rtol=1e-10),
                          min_repeats=1, min_total=0.0) * m / len(sub)
     return {"target": "exact history (tables) vs per-lambda scipy DOP853, rtol 1e-10, dense",
             "grid": f"{m} lambda x {k} tau (loop timed on {len(sub)} lambda)",

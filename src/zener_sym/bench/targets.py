@@ -4,20 +4,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..models import REGISTRY
-from .methods import naive_solve
+from .methods import dop853_force_loop
 from .timing import median_time
-
-
-def dop853_force_loop(lams, tau, rtol: float = 1e-6):
-    """The comparator of the ham1 target: per lambda, a scipy DOP853 solve of Eq. (10) with dense
-    output (tau from 0, guarded right-hand side, event delta = 0), force on that row of ``tau``."""
-    out = np.empty_like(tau)
-    for i, lam in enumerate(lams):
-        summ, sol = naive_solve(lam, rtol, "DOP853", dense=True)
-        t = tau[i]
-        d = np.maximum(sol.sol(np.minimum(t, summ["tau_d"]))[0], 0.0)
-        out[i] = np.where(t < summ["tau_d"], d**1.5, 0.0)
-    return out
 
 
 def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200, quick: bool = False) -> dict | None:

@@ -23,6 +23,7 @@ import importlib
 
 import numpy as np
 
+from ..ham.chebyshev import clenshaw_take
 from . import table_build as _build
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
@@ -154,20 +155,7 @@ def _clenshaw_rows(rows_coef, idx, x):
     """sum_j rows_coef[idx, j] T_j(x) pointwise (Clenshaw), each point taking its coefficient
     from its row by index: no (points x degree) temporaries (a Vandermonde matrix and gathered
     rows cost about 4x more here)."""
-    cT = np.ascontiguousarray(rows_coef.T)  # [degree, row]
-    n = cT.shape[0]
-    x2 = 2.0 * x
-    b1 = cT[n - 1].take(idx)
-    b2 = np.zeros_like(x)
-    for j in range(n - 2, 0, -1):
-        b = x2 * b1
-        b -= b2
-        b += cT[j].take(idx)
-        b1, b2 = b, b1
-    out = x * b1
-    out -= b2
-    out += cT[0].take(idx)
-    return out
+    return clenshaw_take(np.ascontiguousarray(rows_coef.T), idx, x)
 
 
 def history(lam, tau) -> dict:

@@ -35,6 +35,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.special import roots_jacobi
 
+from .chebyshev import clenshaw_take
+
 __all__ = ["K_FUNCS", "sqrt_integrals", "N_NODES", "CUT"]
 
 #: Number of Gauss-Jacobi nodes per piece.
@@ -189,21 +191,6 @@ def _trimmed(c, tol=1e-14):
     return c[: int(keep.max()) + 1 if keep.size else 1]
 
 
-def _clenshaw_take(cT, idx, x):
-    """sum_j cT[j, idx] T_j(x) pointwise, each point with its coefficient column ``idx`` (this
-    leaf module imports nothing of the package, so not ham.chebyshev.clenshaw_take)."""
-    n = cT.shape[0]
-    x2 = 2.0 * x
-    b1 = cT[n - 1].take(idx) + np.zeros_like(x)
-    b2 = np.zeros_like(x)
-    for j in range(n - 2, 0, -1):
-        b = x2 * b1
-        b -= b2
-        b += cT[j].take(idx)
-        b1, b2 = b, b1
-    return x * b1 - b2 + cT[0].take(idx)
-
-
 def impulse_s(a, theta):
     """K_s(a, theta) = int_0^min(theta, pi) exp(-a t) sin^{3/2} t dt, fast for many theta per a.
 
@@ -246,9 +233,9 @@ def _series_eval(u, inv, th):
     out = np.empty(th.shape)
     if left.any():
         x = np.clip(th[left] * (4.0 / np.pi) - 1.0, -1.0, 1.0)
-        out[left] = th[left] ** 2.5 * _clenshaw_take(gG, inv[left], x)
+        out[left] = th[left] ** 2.5 * clenshaw_take(gG, inv[left], x)
     if (~left).any():
         r = np.pi - th[~left]
         x = np.clip(r * (4.0 / np.pi) - 1.0, -1.0, 1.0)
-        out[~left] = k_pi[inv[~left]] - r**2.5 * _clenshaw_take(gH, inv[~left], x)
+        out[~left] = k_pi[inv[~left]] - r**2.5 * clenshaw_take(gH, inv[~left], x)
     return out

@@ -21,6 +21,8 @@ from zener_sym.bench import ham_convergence
 from zener_sym.derivation import ham_higher, ham_strained
 from zener_sym.ham import higher
 
+from conftest import ROOT
+
 _C = np.polynomial.chebyshev
 
 
@@ -257,12 +259,12 @@ def study_rows():
 
 
 def test_committed_convergence_table_is_fresh(study_rows):
-    diffs = ham_convergence.check(rows=study_rows)
+    diffs = ham_convergence.check(root=ROOT, rows=study_rows)
     assert not diffs, "run 'zener-sym ham-convergence':\n" + "\n".join(diffs[:40])
 
 
 def test_stale_table_gives_a_diff(study_rows, tmp_path):
-    root = ham_convergence._root()
+    root = ROOT
     (tmp_path / "docs" / "data").mkdir(parents=True)
     md = (root / "docs" / "ham_convergence.md").read_text()
     (tmp_path / "docs" / "ham_convergence.md").write_text(md.replace("| strained | 1.01 | 8 |", "| strained | 1.01 | 9 |"))

@@ -3,20 +3,28 @@
 and chart, or check that the committed table and CSV are fresh."""
 from __future__ import annotations
 
+import sys
+
 from ..bench import ham_convergence
+from ._checkout import CheckoutError, source_root
 
 
 def _run(args) -> int:
+    try:  # the table lives in the repository's docs/: say so before the study's work
+        root = source_root(f"zener-sym ham-convergence{' --check' if args.check else ''}")
+    except CheckoutError as exc:
+        print(f"zener-sym ham-convergence: error: {exc}", file=sys.stderr)
+        return 2
     if args.check:
-        diffs = ham_convergence.check()
+        diffs = ham_convergence.check(root=root)
         if diffs:
             print("docs/ham_convergence.md or its CSV is stale (run 'zener-sym ham-convergence'):")
             for d in diffs:
                 print("  " + d)
             return 1
-        print("ham convergence table up to date")
+        print(f"{root / 'docs' / 'ham_convergence.md'} is up to date")
         return 0
-    for p in ham_convergence.write(with_chart=not args.no_chart):
+    for p in ham_convergence.write(root=root, with_chart=not args.no_chart):
         print(f"wrote {p}")
     return 0
 

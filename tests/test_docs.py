@@ -29,7 +29,8 @@ def _readme_blocks():
     return re.findall(r"```python\n(.*?)```", text, flags=re.S)
 
 
-def test_readme_python_blocks_run_and_print_what_they_say(monkeypatch):
+def test_readme_python_blocks_run_and_print_what_they_say(monkeypatch, tmp_path):
+    monkeypatch.chdir(tmp_path)  # the quick start saves force.png
     matplotlib = pytest.importorskip("matplotlib")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -60,6 +61,7 @@ def test_readme_python_blocks_run_and_print_what_they_say(monkeypatch):
                     assert round(float(v), digits) == float(s), (line, v)
     plt.close("all")
     assert checked >= 4  # the quick start's numbers were compared
+    assert (tmp_path / "force.png").stat().st_size > 10_000  # the plot was drawn
 
 
 def test_readme_is_for_users():

@@ -38,7 +38,9 @@ def _axes(ax, width=_st.COLUMN_WIDTH, height=2.4):
         return ax
     plt = _st.pyplot()
     with plt.rc_context(_st.RC):
-        _, ax = plt.subplots(figsize=(width, height))
+        # constrained layout keeps the labels and the legend below the axes inside the figure
+        # when the caller saves it without bbox_inches="tight"
+        _, ax = plt.subplots(figsize=(width, height), layout="constrained")
     return ax
 
 

@@ -82,7 +82,8 @@ def test_commands_needing_a_checkout_say_so_up_front(monkeypatch, tmp_path, caps
     fake.parent.mkdir(parents=True)
     monkeypatch.setattr(_checkout, "__file__", str(fake))
     for argv in (["audit", "--check"], ["audit", "--write"], ["derive", "--check"],
-                 ["generate", "--check"], ["generate"], ["ham-convergence", "--check"]):
+                 ["generate", "--check"], ["generate"], ["ham-convergence", "--check"],
+                 ["exact-table"], ["ham1-table"]):
         assert cli.main(argv) == 2, argv
         err = capsys.readouterr().err
         assert "needs a source checkout" in err and "pip install -e ." in err, err

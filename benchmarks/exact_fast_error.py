@@ -2,7 +2,7 @@
 
     python benchmarks/exact_fast_error.py            # 101 lambda, dps 20 (about a minute)
     python benchmarks/exact_fast_error.py --n 25     # quicker
-    python benchmarks/exact_fast_error.py --n 0 --large 8   # the summary on (5, 1000] only
+    python benchmarks/exact_fast_error.py --n 0 --large 8   # the tables on (5, 300] only
 
 The grid lambda = 5 (i + 1/2) / n, i = 0..n-1, plus 0 and 5, is not aligned with the table's
 Chebyshev nodes. For each lambda the reference is ``exact_mp.solve(lam, dps)``; the summary error
@@ -10,7 +10,7 @@ is relative per field (absolute for xi at lambda = 0, where xi = 0), the history
 largest difference on 400 times in [0, 1.02 tau_d] divided by the field's scale (delta_m, F_m,
 1, 1). These numbers back ``zener_sym.exact.table.SUMMARY_RTOL`` and ``HISTORY_ATOL``.
 
-``--large M`` adds the summary tables on (5, 1000] (no history table there) at M lambda spread
+``--large M`` adds the summary and history tables on (5, 1000] at M lambda spread
 geometrically over (5, LAM_MAX_LARGE] (default 300: the mpmath solve takes about 0.03 lambda s
 at dps 20, minutes at 1000), shifted off the nodes.
 """
@@ -53,33 +53,50 @@ LAM_MAX_LARGE = 300.0
 
 
 def measure_large(m: int, dps: int = 20, top: float = LAM_MAX_LARGE) -> dict:
-    """Worst relative error per summary field of the tables on (5, top] against mpmath."""
+    """Worst relative error per summary field and worst history error per field (over 400 times
+    in [0, 1.02 tau_d] and 100 in [0, 3 tau_dc], divided by the field's scale) of the tables on
+    (5, top] against mpmath."""
     lams = np.geomspace(5.0, top, m + 1)[1:] * 0.9937  # off the Chebyshev nodes in ln(lambda)
     s = zs.summary(lams, model="exact", backend="table")
     worst = {f: (0.0, 0.0) for f in FIELDS}
+    hist = {f: (0.0, 0.0) for f in ("delta", "force", "impulse", "velocity")}
     for i, x in enumerate(lams):
         r = exact_mp.solve(float(x), dps=dps)
         for f in FIELDS:
             err = abs(getattr(s, f)[i] / float(getattr(r, f)) - 1)
             if err > worst[f][0]:
                 worst[f] = (err, x)
-    return worst
+        tau = np.concatenate([np.linspace(0.0, 3 * float(r.tau_dc), 100),
+                              np.linspace(0.0, 1.02 * float(r.tau_d), 400)])
+        g = r.history(tau)
+        h = zs.history(float(x), tau, model="exact", backend="table")
+        scale = {"delta": float(r.delta_m), "force": float(r.F_m), "impulse": 1.0, "velocity": 1.0}
+        for f, sc in scale.items():
+            err = float(np.abs(getattr(h, f) - g[f]).max()) / sc
+            if err > hist[f][0]:
+                hist[f] = (err, x)
+    return worst, hist
 
 
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n", type=int, default=101)
     p.add_argument("--dps", type=int, default=20)
-    p.add_argument("--large", type=int, default=0, help="lambda values on (5, 300] (summary)")
+    p.add_argument("--large", type=int, default=0,
+                   help="lambda values on (5, 300] (summary and history)")
     a = p.parse_args(argv)
     ok = True
     if a.large:
-        w = measure_large(a.large, a.dps)
+        w, hw = measure_large(a.large, a.dps)
         print(f"{a.large} lambda in (5, {LAM_MAX_LARGE:g}], reference exact_mp dps {a.dps}")
         print("| summary field | worst rel. error | at lambda |\n|---|---|---|")
         for f, (e, x) in w.items():
             print(f"| {f} | {e:.1e} | {x:.4g} |")
-        ok = max(e for e, _ in w.values()) <= exact_fast.SUMMARY_RTOL
+        print("| history field | worst error / scale | at lambda |\n|---|---|---|")
+        for f, (e, x) in hw.items():
+            print(f"| {f} | {e:.1e} | {x:.4g} |")
+        ok = (max(e for e, _ in w.values()) <= exact_fast.SUMMARY_RTOL
+              and max(e for e, _ in hw.values()) <= exact_fast.HISTORY_ATOL)
     if a.n <= 0:
         return 0 if ok else 1
     m = measure(a.n, a.dps)

@@ -14,6 +14,7 @@ import pytest
 import zener_sym as zs
 from zener_sym.exact import mp as exact_mp
 from zener_sym.exact import solver
+from zener_sym.exact import table as exact_fast
 
 
 @pytest.fixture(scope="module")
@@ -76,6 +77,16 @@ def test_lambda_1000_against_mpmath(mp_1000):
     for f in ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2",
               "xi"):
         assert abs(getattr(t, f) / float(getattr(r, f)) - 1) <= 1e-11, (f, getattr(t, f))
+    # and the history table there (item 7), against the mpmath path's own history: tau across
+    # the short compression (tau_dc = 0.084), the long recovery and past the end of contact
+    tau_d = float(r.tau_d)
+    tau = np.concatenate([np.linspace(0.0, 3 * float(r.tau_dc), 40),
+                          np.linspace(0.0, 1.02 * tau_d, 160)[1:]])
+    g = r.history(tau)
+    h = zs.history(1000.0, tau, model="exact")
+    scale = {"delta": float(r.delta_m), "force": float(r.F_m), "impulse": 1.0, "velocity": 1.0}
+    for f, sc in scale.items():
+        assert np.abs(getattr(h, f) - g[f]).max() <= exact_fast.HISTORY_ATOL * sc, f
 
 
 BAD = [

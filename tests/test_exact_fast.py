@@ -108,19 +108,17 @@ def test_vectorised_equals_elementwise():
         assert one.e == pytest.approx(s.e[i], rel=1e-14)
 
 
-def test_outside_range_integrates_never_extrapolates():
-    """Summaries come from the tables on [0, 1000] (all the model accepts); histories above
-    lambda = 5 are integrated: the default path IS the integrator there (same numbers)."""
-    h = zs.history(7.5, [0.5, 3.0], model="exact")
+def test_tables_cover_the_whole_range_never_extrapolate():
+    """Summaries and histories come from the tables on [0, 1000] (all the model accepts); the
+    table functions refuse anything outside it instead of extrapolating."""
+    assert exact_fast.LAM_MAX == exact_fast.HISTORY_LAM_MAX == 1000.0
+    h = zs.history(7.5, [0.5, 3.0], model="exact", backend="table")
     hi = zs.history(7.5, [0.5, 3.0], model="exact", backend="scipy")
-    assert np.array_equal(h.delta, hi.delta)
-    assert np.array_equal(h.impulse, hi.impulse)
-    with pytest.raises(ValueError, match=r"outside the exact history table's range \[0, 5\]"):
-        zs.history(np.array([1.0, 5.0 + 1e-9]), 1.0, model="exact", backend="table")
+    np.testing.assert_allclose(h.delta, hi.delta, rtol=1e-10)
     with pytest.raises(ValueError, match="outside the exact table's range"):
         exact_fast.summary(np.array([1000.5]))
     with pytest.raises(ValueError, match="outside the exact history table's range"):
-        exact_fast.history(np.array([5.5]), np.array([1.0]))
+        exact_fast.history(np.array([1000.5]), np.array([1.0]))
 
 
 def test_integrator_options_force_integration():
@@ -142,11 +140,18 @@ def test_table_is_fresh_hash():
 def test_compare_detects_a_changed_coefficient():
     stored = {"summary": exact_table.SUMMARY, "history": exact_table.HISTORY}
     fresh = {"summary": {k: [np.asarray(c, float) for c in v] for k, v in stored["summary"].items()},
-             "history": {k: [np.asarray(c, float) for c in v] for k, v in stored["history"].items()}}
+             "history": {k: [tuple(np.asarray(c, float) for c in subs) for subs in v]
+                         for k, v in stored["history"].items()}}
     assert build.compare(stored, fresh) == []
     fresh["summary"]["log_e"][2] = fresh["summary"]["log_e"][2].copy()
     fresh["summary"]["log_e"][2][5] += 1e-8
     assert len(build.compare(stored, fresh)) == 1
+    # a history coefficient (piece A, lambda piece 6, sub-piece 3) moved by 1e-6
+    subs = list(fresh["history"][("A", "f")][6])
+    subs[3] = subs[3].copy()
+    subs[3][2, 1] += 1e-6
+    fresh["history"][("A", "f")][6] = tuple(subs)
+    assert len(build.compare(stored, fresh)) == 2
 
 
 @pytest.mark.slow

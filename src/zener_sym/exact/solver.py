@@ -368,9 +368,10 @@ def _middle(lam, rtol, atol, method, tau1, u1, w1, J1, budget=None, t_stop=None)
 
     hand_over.terminal, hand_over.direction = True, 1
     if t_stop is not None:
+        # dense output does not change the steps: the end state is the one without it
         sb = solve_ivp(_rhs_tau(lam, budget), (tau_dc, tau_dc + t_stop), [delta_m, w_dc, J_dc],
                        method=method, rtol=rtol, atol=np.array([atol, 1e-300, atol]),
-                       first_step=1e-3 * tau_dc)
+                       first_step=1e-3 * tau_dc, dense_output=True)
         return _TwoPieces(sa.sol, sb, tau_dc), tau_dc, delta_m, None, None
     # first_step: LSODA's own first step from this state (δ' = 0) can have zero length, which its
     # dense output refuses; the other methods' error control corrects any first step
@@ -398,16 +399,25 @@ def solve_early(lam: float, span: float, rtol: float = 1e-13, atol: float = 1e-1
 
     For large lambda the rest of the contact follows one universal orbit (see
     ``zener_sym.exact.table_build``), so the tables need only this early part per lambda: phase 1,
-    phase 2a up to τ_dc and phase 2b for ``span`` more. Returns tau_dc, delta_m and the state
-    (tau, delta, w, J) at tau_dc + span.
+    phase 2a up to τ_dc and phase 2b for ``span`` more. Returns tau_dc, delta_m, the state
+    (tau, delta, w, J) at tau_dc + span, and ``solution``: an ``ExactSolution`` of that early part
+    (its ``history`` valid for 0 <= tau < tau_dc + span; its tau_d, w_end, int_F2 are the end
+    state's, not the contact's).
     """
     rtol, atol, method = check_options(rtol=rtol, atol=atol, method="DOP853")
     lam = float(lam)
     atols = np.array([atol, 1e-300, atol])
     budget = _Budget(lam, method, rtol)
-    _, u1, (tau1, w1, J1) = _loading(lam, rtol, atols, method, budget)
+    s1, u1, (tau1, w1, J1) = _loading(lam, rtol, atols, method, budget)
     mid, tau_dc, delta_m, _, _ = _middle(lam, rtol, atol, method, tau1, u1, w1, J1, budget,
                                          t_stop=None if span is None else span)
     sb = mid.after_solution
-    return {"tau_dc": tau_dc, "delta_m": delta_m, "tau": float(sb.t[-1]),
-            "delta": float(sb.y[0, -1]), "w": float(sb.y[1, -1]), "J": float(sb.y[2, -1])}
+    tau_m = float(sb.t[-1])
+    mid.after = sb.sol  # (delta, w) rows as in a full solve's middle phase
+    early = ExactSolution(
+        lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=tau_m, w_end=float(sb.y[1, -1]),
+        int_F2=float(sb.y[2, -1]), _load=s1.sol, _mid=mid, _unload=None, _tau1=float(tau1),
+        _tau2=tau_m, _u_grid1=s1.t, _tau_grid1=s1.y[0], _u_grid3=None, _tau_grid3=None)
+    return {"tau_dc": tau_dc, "delta_m": delta_m, "tau": tau_m,
+            "delta": float(sb.y[0, -1]), "w": float(sb.y[1, -1]), "J": float(sb.y[2, -1]),
+            "solution": early}

@@ -3,14 +3,15 @@
 The tables (``generated/exact_table.py``, built offline by :mod:`zener_sym.exact.table_build` from
 the scipy solver at rtol 1e-13) cover ``LAM_MIN <= lambda <= LAM_MAX`` for the summary (above
 ``HISTORY_LAM_MAX`` in the variable ln lambda, from the universal large-lambda orbit) and
-``LAM_MIN <= lambda <= HISTORY_LAM_MAX`` for the history. They are never extrapolated:
+``LAM_MIN <= lambda <= HISTORY_LAM_MAX`` (80) for the history. They are never extrapolated:
 :func:`in_range` and :func:`history_in_range` tell the caller which lambda must be integrated.
 
 Documented error bounds: ``SUMMARY_RTOL`` relative on every summary field, ``HISTORY_ATOL`` on
 delta/delta_m, force/F_m, impulse and velocity, both against the mpmath reference (``exact.mp``)
-at lambda between the nodes: ``benchmarks/exact_fast_error.py`` measures them on [0, 5] and
-docs/exact.md lists the numbers; ``tests/test_exact_fast.py`` and ``tests/test_exact_large.py``
-check them between nodes on [0, 5] and on (5, 1000].
+at lambda between the nodes: ``benchmarks/exact_fast_error.py`` measures them and docs/exact.md
+lists the numbers; ``tests/test_exact_fast.py`` and ``tests/test_exact_large.py`` (and the slow
+lambda = 1000 test in ``tests/test_exact_edges.py``) check them between nodes on [0, 5] and on
+(5, 1000].
 
 Note that near the end of contact the *pointwise relative* error of delta grows like
 (error of tau_d) / (tau_d - tau): delta(tau) is ill-conditioned there for any method whose
@@ -32,19 +33,31 @@ __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATO
 LAM_MIN = float(_build.LAM_PIECES[0])
 LAM_MAX = float(_build.LAM_PIECES[-1])
 #: The history tables end here (the summary goes on to LAM_MAX).
-HISTORY_LAM_MAX = float(_build.LOG_FROM)
+HISTORY_LAM_MAX = float(_build.HISTORY_TO)
 #: Documented (and tested) relative error bound of every summary field.
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
 HISTORY_ATOL = 1e-10
 
 
-def _stack(mats) -> np.ndarray:
-    """One zero-padded array [lambda piece, time degree, lambda degree] (trimming varies)."""
-    mats = [np.asarray(c, dtype=float) for c in mats]
+def _stack2(mats) -> np.ndarray:
+    """One zero-padded array [lambda piece, field, degree] (trimming varies)."""
     out = np.zeros((len(mats), max(c.shape[0] for c in mats), max(c.shape[1] for c in mats)))
     for i, c in enumerate(mats):
         out[i, : c.shape[0], : c.shape[1]] = c
+    return out
+
+
+def _stack(pieces) -> np.ndarray:
+    """One zero-padded array [lambda piece, sub-piece, time degree, lambda degree] (trimming
+    varies)."""
+    mats = [[np.asarray(c, dtype=float) for c in subs] for subs in pieces]
+    flat = [c for subs in mats for c in subs]
+    out = np.zeros((len(mats), max(len(subs) for subs in mats), max(c.shape[0] for c in flat),
+                    max(c.shape[1] for c in flat)))
+    for i, subs in enumerate(mats):
+        for j, c in enumerate(subs):
+            out[i, j, : c.shape[0], : c.shape[1]] = c
     return out
 
 
@@ -61,7 +74,10 @@ def _tables():
     """The generated table, loaded on first use (parsing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
     if (tuple(t.LAM_PIECES) != tuple(_build.LAM_PIECES) or t.C_STRETCH != _build.C_STRETCH
-            or getattr(t, "LOG_FROM", None) != _build.LOG_FROM):
+            or getattr(t, "LOG_FROM", None) != _build.LOG_FROM
+            or getattr(t, "HISTORY_TO", None) != _build.HISTORY_TO
+            or getattr(t, "C_END", None) != _build.C_END
+            or getattr(t, "N_SUB", None) != _build.N_SUB):
         raise RuntimeError("generated/exact_table.py does not match zener_sym.exact.table_build (stale "
                            "table): run `zener-sym exact-table`")
     edges = np.asarray(t.LAM_PIECES, dtype=float)
@@ -73,7 +89,7 @@ def _tables():
     return {"edges": edges, "log": log, "ga": ga, "gb": gb, "c": float(t.C_STRETCH),
             "summary_keys": tuple(t.SUMMARY),
             # [lambda piece, field, degree], zero-padded: all fields in one pass
-            "summary": _stack([_pad_rows([v[p] for v in t.SUMMARY.values()])
+            "summary": _stack2([_pad_rows([v[p] for v in t.SUMMARY.values()])
                                for p in range(len(t.LAM_PIECES) - 1)]),
             "history": {k: _stack(v) for k, v in t.HISTORY.items()}}
 
@@ -99,7 +115,8 @@ def _piece(lam: np.ndarray, history: bool = False):
                          f"[{LAM_MIN:g}, {LAM_MAX:g}]; integrate instead (backend='scipy')")
     t = _tables()
     edges = t["edges"]
-    last = int(np.count_nonzero(~t["log"])) - 1 if history else len(edges) - 2
+    last = (int(np.count_nonzero(edges[1:] <= HISTORY_LAM_MAX)) - 1 if history
+            else len(edges) - 2)
     i = np.clip(np.searchsorted(edges, lam, side="right") - 1, 0, last)
     log = t["log"][i]
     with np.errstate(divide="ignore"):
@@ -142,13 +159,15 @@ def summary(lam) -> dict:
 
 
 def _time_coefficients(key, ip: np.ndarray, xl: np.ndarray) -> np.ndarray:
-    """Chebyshev coefficients in time, one row per lambda: sum_k C[j, k] T_k(x_lambda).
+    """Chebyshev coefficients in time, one row per (lambda, sub-piece), row = lambda index times
+    the number of sub-pieces plus the sub-piece: sum_k C[s, j, k] T_k(x_lambda).
 
     Plain broadcasting, no BLAS: the sizes are small and a threaded matmul only adds overhead.
     """
     c = _tables()["history"][key]
-    tl = np.polynomial.chebyshev.chebvander(xl, c.shape[2] - 1)  # [lambda, k]
-    return np.einsum("lk,ljk->lj", tl, c[ip], optimize=False)
+    tl = np.polynomial.chebyshev.chebvander(xl, c.shape[3] - 1)  # [lambda, k]
+    out = np.einsum("lk,lsjk->lsj", tl, c[ip], optimize=False)
+    return out.reshape(-1, out.shape[2])
 
 
 def _clenshaw_rows(rows_coef, idx, x):
@@ -186,30 +205,38 @@ def history(lam, tau) -> dict:
     delta = np.zeros(tau.shape)
     imp = (1.0 + v["e"])[inv]  # after the contact the impulse keeps its final value
     piece = np.full(tau.shape, -1)
+    log = _tables()["log"][ip]
+    tau_s_u = _build.split_time(lu, log, v["tau_dc"], v["tau_w0"])
+    tau_s = tau_s_u[inv]
     piece[tau <= tau_dc] = 0
-    piece[(tau > tau_dc) & (tau < tau_w0)] = 1
+    piece[(tau > tau_dc) & (tau < tau_s)] = 1
+    piece[(tau >= tau_s) & (tau < tau_w0)] = 3
     piece[(tau >= tau_w0) & (tau < tau_d)] = 2
-    for n, name in enumerate(("C", "A", "B")):
+    for n, name in ((0, "C"), (1, "A"), (3, "M"), (2, "B")):
         m = piece == n
         if not m.any():
             continue
         t, dc, w0, d = tau[m], tau_dc[m], tau_w0[m], tau_d[m]
+        im = inv[m]
         if name == "C":
             y = np.sqrt(t / dc)
-        elif name == "A":  # only reached when tau_w0 > tau_dc, so beta > 0
-            y = np.log1p((t - dc) / _tables()["c"]) / np.log1p((w0 - dc) / _tables()["c"])
-        else:
+        elif name == "B":
             y = np.sqrt((d - t) / (d - w0))
-        xt = np.clip(2.0 * y - 1.0, -1.0, 1.0)
-        im = inv[m]
-        f = _clenshaw_rows(_time_coefficients((name, "f"), ip, xl), im, xt)
-        imp[m] = _clenshaw_rows(_time_coefficients((name, "I"), ip, xl), im, xt)
+        else:  # A or M: only reached when the piece is not empty
+            params = _build.map_params(name, lu, log, v["tau_dc"], tau_s_u, v["tau_w0"])
+            y = _build.lin_log(t, *(np.asarray(q)[im] for q in params))
+        k = _build.N_SUB[name]
+        sub = np.clip(np.floor(y * k), 0, k - 1)
+        xt = np.clip(2.0 * (y * k - sub) - 1.0, -1.0, 1.0)
+        rows = im * k + sub.astype(np.intp)
+        f = _clenshaw_rows(_time_coefficients((name, "f"), ip, xl), rows, xt)
+        imp[m] = _clenshaw_rows(_time_coefficients((name, "I"), ip, xl), rows, xt)
         if name == "C":
             delta[m] = t * np.exp(f)
-        elif name == "A":
-            delta[m] = np.exp(f)
-        else:
+        elif name == "B":
             delta[m] = (d - t) * np.exp(f)
+        else:
+            delta[m] = np.exp(f)
     delta = delta.reshape(shape)
     imp = imp.reshape(shape)
     return {"delta": delta, "impulse": imp, "velocity": 1.0 - imp, "force": delta**1.5}

@@ -6,21 +6,31 @@ suitable time variables, is analytic in (time variable, lambda). We sample the s
 ``LAM_PIECES`` and store Chebyshev coefficients (15 significant digits), trimmed where the
 trailing ones fall below ``TRIM`` of the largest. :mod:`zener_sym.exact.table` evaluates them.
 
-Time pieces of the history (y in [0, 1] maps to x = 2y - 1 in [-1, 1]):
+Time pieces of the history, each cut into ``N_SUB`` equal parts of its reduced time y (y in
+[j/K, (j+1)/K] maps to x in [-1, 1]), so that each sub-piece needs a low degree (``N_TIME``):
 
 ``C`` compression, tau = tau_dc y^2: delta = tau exp(f), f analytic because delta is analytic in
     sqrt(tau) with delta ~ tau at the start and analytic in tau at the maximum.
-``A`` recovery until the sphere is at rest (w = 1 - I = 0 at tau_w0), tau = tau_dc + c (e^{beta y} - 1)
-    with beta = log(1 + (tau_w0 - tau_dc)/c): the exponential stretch resolves both the fast
-    relaxation after tau_dc and the slow decay (time scale lambda) of large lambda. f = log delta.
+``A`` recovery from tau_dc to tau_s, y from ``lin_log`` (logarithmic in tau - tau_dc at scale c1:
+    resolves the fast relaxation after tau_dc). f = log delta. For lambda <= LOG_FROM tau_s is
+    tau_w0, where the sphere is at rest (w = 1 - I = 0), and the map is logarithmic in
+    tau_w0 - tau too (scale C_END (1 + lambda)); above, tau_s = tau_dc + lambda (S_ORBIT + ...),
+    just past the loading transient.
+``M`` (lambda > LOG_FROM only) from tau_s to tau_w0: the slow decay along the universal orbit
+    (time scale lambda: linear in T = tau / lambda) and the change of regime at tau_w0
+    (logarithmic, scale lambda). f = log delta. One logarithmic map over the whole recovery
+    crams T in [1, 30] into a few percent of y at lambda = 1000 (coefficients stall at 1e-9).
 ``B`` the rest of the recovery, tau = tau_d - D y^2, D = tau_d - tau_w0: delta = (tau_d - tau) exp(f),
     analytic in sqrt(tau_d - tau) at the end of contact.
 
 Splitting the recovery where w = 0 matters: for large lambda delta changes regime there (from the
 quasi-static delta ~ (w/lambda)^{2/3} to the linear end e (tau_d - tau)); a single piece converges
-slowly. The impulse I is tabulated directly on each piece (absolute accuracy).
+slowly. The impulse I is tabulated directly on each piece (absolute accuracy). History arrays
+are trimmed and rounded on the field's scale (``HISTORY_TRIM``, ``HISTORY_QUANTUM``): a
+coefficient c of f moves delta by c delta, so it is weighed by the sub-piece's largest
+delta / delta_m (at large lambda delta is 1e-10 delta_m and less in pieces M and B).
 
-Large lambda (pieces above ``LOG_FROM``, summary only; the Chebyshev variable is ln lambda).
+Large lambda (pieces above ``LOG_FROM``; the Chebyshev variable is ln lambda).
 With delta = lambda^-4 D, w = lambda^-5 W, tau = lambda T, Eq. (10) becomes the lambda = 1 system
 D' = W - D^{3/2}, W' = -D^{3/2} started at W = lambda^5: every lambda runs along one universal
 orbit of that system once its loading transient has died out (the orbit attracts at the rate
@@ -29,8 +39,11 @@ tau_dc plus ``MATCH_DECAYS`` e-foldings of that transient), and the rest of its 
 off one solve at ``LAM_U`` (the orbit in that lambda's variables), matched at equal W:
 tau_d = tau_M + (lambda / LAM_U) (tau_d,U - tau_U(W_M)). The same orbit gives e = C lambda^-5
 with C = e_U LAM_U^5 (the end of the orbit; the review saw e lambda^5 settle above lambda = 3),
-and the energy balance gives int_F2 = (1 - e^2) / (2 lambda). The build stays cheap: one long
-solve instead of one per node.
+and the energy balance gives int_F2 = (1 - e^2) / (2 lambda). The history after tau_M is the
+orbit's too: delta = (LAM_U / lambda)^4 delta_U, w = (LAM_U / lambda)^5 w_U at
+tau_U = t_U + (LAM_U / lambda)(tau - tau_M). The build stays cheap: one long solve instead of
+one per node. History samples in the stiff tau-phases are integrated afresh from the solver's
+accepted steps (``_from_steps``), not read off its dense output.
 
 The node values come from a floating-point integrator, so the text is not bit-reproducible across
 machines: the table is NOT in ``codegen.BUILDERS``; ``zener-sym exact-table --check`` rebuilds it
@@ -44,11 +57,13 @@ import pathlib
 
 import numpy as np
 
-#: Breakpoints of the lambda pieces: the summary table covers [0, 1000], the history [0, 5].
+#: Breakpoints of the lambda pieces: the summary and history tables cover [0, 1000].
 LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0, 1000.0)
-#: Pieces starting at or above this lambda use ln(lambda) as their Chebyshev variable and carry
-#: the summary only (their nodes come from the universal orbit, see the module docstring).
+#: Pieces starting at or above this lambda use ln(lambda) as their Chebyshev variable (their
+#: nodes come from the universal orbit, see the module docstring).
 LOG_FROM = 5.0
+#: The history tables end here (as the summary's).
+HISTORY_TO = 1000.0
 #: lambda of the one long solve that gives the universal orbit (above LAM_PIECES[-1]: every
 #: node's W_M = lambda^5 w_M must lie on the part of the orbit past its own transient).
 LAM_U = 1050.0
@@ -56,21 +71,41 @@ LAM_U = 1050.0
 MATCH_DECAYS = 40.0
 #: Chebyshev points per lambda piece.
 N_LAM = 22
-#: Chebyshev points per time piece C, A, B.
-N_TIME = {"C": 28, "A": 44, "B": 28}
-#: Time scale of the exponential stretch of piece A.
+#: Sub-pieces (equal parts of the reduced time y) per time piece; piece M exists on the ln-lambda
+#: pieces only (see ``split_time``).
+N_SUB = {"C": 2, "A": 8, "M": 10, "B": 2}
+#: Chebyshev points per sub-piece of each time piece.
+N_TIME = {"C": 20, "A": 16, "M": 16, "B": 20}
+#: Time scale of the logarithmic stretch of piece A at its start (tau_dc), for lambda <= LOG_FROM;
+#: above, C_STRETCH (LOG_FROM / lambda)^(2/3), the relaxation time 1 / (1.5 lambda delta^{1/2})
+#: of the loading transient (delta ~ lambda^(-2/3)).
 C_STRETCH = 1.0
+#: lambda <= LOG_FROM: time scale of the logarithmic stretch of piece A at its end (tau_w0),
+#: C_END (1 + lambda), the time scale of the slow decay where delta changes regime.
+C_END = 0.5
+#: lambda > LOG_FROM: piece A ends at tau_s = tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)),
+#: past the loading transient (40 e-foldings take 27 lambda^(-5/3) in T = tau / lambda); piece M
+#: runs from there to tau_w0, linear in T with a logarithmic end of scale lambda.
+S_ORBIT = 0.3
+S_TRANSIENT = 10.0
 #: Tolerance of the scipy solves at the nodes (their accuracy is about 1e-12).
 RTOL = 1e-13
 #: Trailing coefficients below this fraction of an array's largest are dropped (noise level).
 TRIM = 1e-14
+#: History arrays: a trailing row or column is dropped when each of its coefficients changes its
+#: field by less than this (relative to delta_m for f, whose coefficient c changes delta by
+#: c delta, so c is weighed by the sub-piece's largest delta / delta_m; absolute for I).
+HISTORY_TRIM = 3e-13
+#: History coefficients are written rounded to this, on the same scale (keeps the file small:
+#: most coefficients are small or weigh little).
+HISTORY_QUANTUM = 1e-15
 #: ``--check`` passes when every rebuilt coefficient is within this of the stored one (relative
 #: to the largest coefficient of its array).
 CHECK_RTOL = 1e-10
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest_over_lam")
 HISTORY_KEYS = ("f", "I")
-TIME_PIECES = ("C", "A", "B")
+TIME_PIECES = ("C", "A", "M", "B")
 
 
 def cheb_nodes(n: int) -> np.ndarray:
@@ -88,14 +123,62 @@ def cheb_coefficients(values: np.ndarray, axis: int = 0) -> np.ndarray:
     return np.moveaxis(np.tensordot(m, values, axes=1), 0, axis)
 
 
-def time_nodes(piece: str, y: np.ndarray, tau_dc: float, tau_w0: float, tau_d: float) -> np.ndarray:
-    """tau at the reduced time y in [0, 1] of one time piece (see the module docstring)."""
+def split_time(lam, log_piece, tau_dc, tau_w0):
+    """tau_s, the end of piece A and start of piece M: tau_w0 for lambda <= LOG_FROM (no piece
+    M), tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)) above."""
+    lam = np.asarray(lam, dtype=float)
+    with np.errstate(divide="ignore"):
+        big = np.where(log_piece, lam, 1.0)
+        return np.where(log_piece, tau_dc + big * (S_ORBIT + S_TRANSIENT * big ** (-5.0 / 3.0)),
+                        tau_w0)
+
+
+def map_params(piece, lam, log_piece, tau_dc, tau_s, tau_w0):
+    """(start, end, c1, c2, c3) of the logarithmic-linear map ``lin_log`` of piece A or M."""
+    lam = np.asarray(lam, dtype=float)
+    inf = np.full(lam.shape, np.inf)
+    if piece == "A":
+        with np.errstate(divide="ignore"):
+            c1 = C_STRETCH * np.where(log_piece, (LOG_FROM / np.where(log_piece, lam, 1.0))
+                                      ** (2.0 / 3.0), 1.0)
+        return tau_dc, tau_s, c1, np.where(log_piece, inf, C_END * (1.0 + lam)), inf
+    return tau_s, tau_w0, inf, lam, lam
+
+
+def lin_log(tau, start, end, c1, c2, c3):
+    """Reduced time y in [0, 1] on [start, end]: u = ln(1 + (tau - start)/c1) + (tau - start)/c3
+    - ln(1 + (end - tau)/c2), normalised (c = inf drops a term). The logarithms resolve a
+    fast start (the relaxation after tau_dc, scale c1) and a change of regime at the end (where
+    w -> 0, scale c2); the linear term the orbit's steady decay (time scale c3 = lambda)."""
+    span = end - start
+    u0, u1 = -np.log1p(span / c2), np.log1p(span / c1) + span / c3
+    u = np.log1p((tau - start) / c1) + (tau - start) / c3 - np.log1p((end - tau) / c2)
+    return (u - u0) / (u1 - u0)
+
+
+def time_nodes(piece: str, y: np.ndarray, tau_dc: float, tau_w0: float, tau_d: float,
+               params=None) -> np.ndarray:
+    """tau at the reduced time y in [0, 1] of one time piece (see the module docstring); pieces
+    A and M invert ``lin_log`` (``params`` from ``map_params``) by bisection (monotone)."""
     if piece == "C":
         return tau_dc * y * y
-    if piece == "A":
-        beta = np.log1p((tau_w0 - tau_dc) / C_STRETCH)
-        return tau_dc + C_STRETCH * np.expm1(beta * y)
-    return tau_d - (tau_d - tau_w0) * y * y
+    if piece == "B":
+        return tau_d - (tau_d - tau_w0) * y * y
+    start, end = params[0], params[1]
+    lo, hi = np.full(y.shape, start), np.full(y.shape, end)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if np.all((mid <= lo) | (mid >= hi)):
+            break
+        below = lin_log(mid, *params) < y
+        lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+    return 0.5 * (lo + hi)
+
+
+def sub_nodes(piece: str) -> np.ndarray:
+    """Reduced times y of the Chebyshev points of every sub-piece of a time piece, [sub, point]."""
+    k, x = N_SUB[piece], cheb_nodes(N_TIME[piece])
+    return (np.arange(k)[:, None] + (x[None, :] + 1.0) / 2.0) / k
 
 
 def _rest_time(sol) -> float:
@@ -106,6 +189,59 @@ def _rest_time(sol) -> float:
         return float(sol.history(np.array([t]))["velocity"][0])
 
     return brentq(w, sol.tau_dc, sol.tau_d, xtol=1e-15, rtol=1e-15, maxiter=200)
+
+
+def _from_steps(lam: float, sol, t: np.ndarray, four: bool) -> np.ndarray:
+    """States of a tau-phase at the times t, integrated afresh from the last accepted step before
+    each t (all points at once, DOP853 at RTOL in s = (t - t_k) / (t_k+1 - t_k)).
+
+    Not ``sol(t)``: at large lambda the phase is stiff (rate 1.5 lambda delta^{1/2}), its steps sit
+    at the stability limit and DOP853's dense output between steps is off by up to 7e-9 relative
+    in delta (at lambda = 100 matched to the orbit at LAM_U), while the step states are not."""
+    from scipy.integrate import solve_ivp
+
+    ts = sol.ts
+    k = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, len(ts) - 2)
+    y0 = np.atleast_2d(sol(ts[k]))  # [state, point]: a step's own state (interpolant at its start)
+    dt = t - ts[k]
+    n = y0.shape[0]
+
+    def f(_, y):
+        y = y.reshape(n, -1)
+        d = np.maximum(y[0], 0.0)
+        sd = np.sqrt(d)
+        F = d * sd
+        if four:  # (delta, v, w, J)
+            out = (y[1], -F - 1.5 * lam * sd * y[1], -F, F * F)
+        else:  # (delta, w, J)
+            out = (y[1] - lam * F, -F, F * F)
+        return (np.stack(out) * dt).ravel()
+
+    r = solve_ivp(f, (0.0, 1.0), y0.ravel(), method="DOP853", rtol=RTOL, atol=1e-300)
+    if r.status != 0:
+        raise RuntimeError(f"table build: re-integration from the steps failed at lambda = {lam}")
+    return r.y[:, -1].reshape(n, -1)
+
+
+def node_history(s, tau: np.ndarray, tau_end: float | None = None):
+    """(delta, w) of the solution ``s`` (``solver.solve`` or ``solve_early``'s, whose middle phase
+    ends at ``tau_end``) at tau, the tau-phases from their steps (``_from_steps``)."""
+    tau = np.asarray(tau, dtype=float)
+    delta, w = np.empty(tau.shape), np.empty(tau.shape)
+    end = s._tau2 if tau_end is None else tau_end
+    a = (tau > s._tau1) & (tau <= s.tau_dc)
+    b = (tau > s.tau_dc) & (tau < end)
+    rest = ~(a | b)
+    if a.any():
+        y = _from_steps(s.lam, s._mid.before, tau[a], four=True)
+        delta[a], w[a] = y[0], y[2]
+    if b.any():
+        y = _from_steps(s.lam, s._mid.after, tau[b], four=False)
+        delta[b], w[b] = y[0], y[1]
+    if rest.any():
+        h = s.history(tau[rest])
+        delta[rest], w[rest] = h["delta"], h["velocity"]
+    return delta, w
 
 
 def is_log_piece(a: float) -> bool:
@@ -122,8 +258,11 @@ def universal_orbit():
     return U, _rest_time(U), -U.w_end * LAM_U**5
 
 
-def large_node(lam: float) -> dict:
-    """Summary values of one large lambda from its early part and the universal orbit."""
+def large_node(lam: float, history: bool = True) -> dict:
+    """Summary values (and history samples) of one large lambda from its early part and the
+    universal orbit: before tau_M = tau_dc + MATCH_DECAYS / rate its own solve, after it the
+    orbit, delta = (LAM_U / lambda)^4 delta_U and w = (LAM_U / lambda)^5 w_U at
+    tau_U = t_U + (LAM_U / lambda) (tau - tau_M)."""
     from scipy.optimize import brentq
 
     from . import solver as exact
@@ -141,9 +280,24 @@ def large_node(lam: float) -> dict:
     tau_d = r["tau"] + scale * (U.tau_d - t_U)
     tau_w0 = r["tau"] + scale * (tau_w0_U - t_U)
     e = C / lam**5
-    return {"delta_m": r["delta_m"], "tau_dc": r["tau_dc"], "log_tau_d": np.log(tau_d),
-            "log_e": np.log(e), "int_F2": (1.0 - e * e) / (2.0 * lam),
-            "rest_over_lam": (tau_w0 - r["tau_dc"]) / lam}
+    out = {"delta_m": r["delta_m"], "tau_dc": r["tau_dc"], "log_tau_d": np.log(tau_d),
+           "log_e": np.log(e), "int_F2": (1.0 - e * e) / (2.0 * lam),
+           "rest_over_lam": (tau_w0 - r["tau_dc"]) / lam}
+    if history:
+        early = r["solution"]
+
+        def hist(tau):
+            delta, w = np.empty(tau.shape), np.empty(tau.shape)
+            m = tau < r["tau"]
+            if m.any():
+                delta[m], w[m] = node_history(early, tau[m], tau_end=r["tau"])
+            if (~m).any():
+                d_U, w_U = node_history(U, t_U + (tau[~m] - r["tau"]) / scale)
+                delta[~m], w[~m] = d_U * scale**-4, w_U * scale**-5
+            return delta, w
+
+        out.update(_history_samples(hist, r["tau_dc"], tau_w0, tau_d, lam, True))
+    return out
 
 
 def piece_nodes(a: float, b: float) -> np.ndarray:
@@ -152,6 +306,30 @@ def piece_nodes(a: float, b: float) -> np.ndarray:
     if is_log_piece(a):
         return np.exp(np.log(a) + (np.log(b) - np.log(a)) * (x + 1.0) / 2.0)
     return a + (b - a) * (x + 1.0) / 2.0
+
+
+def _history_samples(hist, tau_dc, tau_w0, tau_d, lam, log_piece) -> dict:
+    """{(piece, "f"/"I"): [sub, point]} from hist(tau) -> (delta, w) at the sub-pieces' nodes."""
+    tau_s = float(split_time(lam, log_piece, tau_dc, tau_w0))
+    out = {}
+    for piece in TIME_PIECES:
+        if piece == "M" and not log_piece:
+            continue
+        params = tuple(float(c) for c in map_params(piece, lam, log_piece, tau_dc, tau_s, tau_w0))
+        y = sub_nodes(piece)
+        tau = time_nodes(piece, y, tau_dc, tau_w0, tau_d, params)
+        d, w = hist(tau.ravel())
+        d, w = d.reshape(y.shape), w.reshape(y.shape)
+        if piece == "C":
+            f = np.log(d / tau)
+        elif piece == "B":
+            f = np.log(d / ((tau_d - tau_w0) * y * y))
+        else:
+            f = np.log(d)
+        out[(piece, "f")] = f
+        out[(piece, "I")] = 1.0 - w
+        out[(piece, "delta")] = d.max(axis=1)  # per sub-piece: the weight of f's coefficients
+    return out
 
 
 def node_data(lam: float) -> dict:
@@ -163,19 +341,8 @@ def node_data(lam: float) -> dict:
     out = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
            "log_e": np.log(-s.w_end), "int_F2": s.int_F2,
            "rest_over_lam": (tau_w0 - s.tau_dc) / lam}
-    for piece in TIME_PIECES:
-        y = (cheb_nodes(N_TIME[piece]) + 1.0) / 2.0
-        tau = time_nodes(piece, y, s.tau_dc, tau_w0, s.tau_d)
-        h = s.history(tau)
-        d = h["delta"]
-        if piece == "C":
-            f = np.log(d / tau)
-        elif piece == "A":
-            f = np.log(d)
-        else:
-            f = np.log(d / ((s.tau_d - tau_w0) * y * y))
-        out[(piece, "f")] = f
-        out[(piece, "I")] = h["impulse"]
+    out.update(_history_samples(lambda t: node_history(s, t), s.tau_dc, tau_w0, s.tau_d, lam,
+                                False))
     return out
 
 
@@ -189,26 +356,51 @@ def _trim(c: np.ndarray) -> np.ndarray:
     return c[:rows, :cols]
 
 
+def _trim_weighted(c: np.ndarray, weight: float) -> np.ndarray:
+    """Drop trailing rows/columns of a history array below HISTORY_TRIM / weight."""
+    big = np.abs(c) * weight > HISTORY_TRIM
+    if not big.any():
+        return c[:1, :1]
+    rows = np.nonzero(big.any(axis=1))[0].max() + 1
+    cols = np.nonzero(big.any(axis=0))[0].max() + 1
+    return c[:rows, :cols]
+
+
 def build_tables() -> dict:
     """All coefficients: {"summary": {key: [1-D per lambda piece]}, "history": {(piece, key): [2-D]}}.
 
-    2-D arrays are indexed [time degree, lambda degree].
+    history[(piece, key)] holds, per lambda piece up to HISTORY_TO, one 2-D array per sub-piece
+    indexed [time degree, lambda degree].
     """
     summary = {k: [] for k in SUMMARY_KEYS}
     history = {(p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
+    weights = {key: [] for key in history}  # per lambda piece, per sub-piece
     for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:]):
         lams = piece_nodes(a, b)
-        node = large_node if is_log_piece(a) else node_data
-        data = [node(float(x)) for x in lams]
+        if is_log_piece(a):
+            data = [large_node(float(x), history=b <= HISTORY_TO) for x in lams]
+        else:
+            data = [node_data(float(x)) for x in lams]
         for k in SUMMARY_KEYS:
             summary[k].append(_trim(cheb_coefficients(np.array([d[k] for d in data]))))
-        if is_log_piece(a):
+        if b > HISTORY_TO:
             continue
         for key in history:
-            vals = np.array([d[key] for d in data]).T  # [time node, lambda node]
-            c = cheb_coefficients(cheb_coefficients(vals, axis=0), axis=1)
-            history[key].append(_trim(c))
-    return {"summary": summary, "history": history}
+            if key not in data[0]:  # piece M below LOG_FROM
+                history[key].append(())
+                weights[key].append(())
+                continue
+            vals = np.array([d[key] for d in data])  # [lambda node, sub, time node]
+            c = cheb_coefficients(cheb_coefficients(vals, axis=2), axis=0)
+            if key[1] == "f":
+                wt = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
+            else:
+                wt = np.ones(c.shape[1])
+            # one [time degree, lambda degree] matrix per sub-piece
+            history[key].append(tuple(_trim_weighted(c[:, j, :].T, wt[j])
+                                      for j in range(c.shape[1])))
+            weights[key].append(tuple(float(x) for x in wt))
+    return {"summary": summary, "history": history, "weights": weights}
 
 
 def inputs_hash() -> str:
@@ -219,6 +411,21 @@ def inputs_hash() -> str:
         h.update(name.encode())
         h.update((here / name).read_bytes().replace(b"\r\n", b"\n"))
     return h.hexdigest()[:16]
+
+
+def _fmt_q(a: np.ndarray, quantum: float, indent: str) -> str:
+    """Like ``_fmt``, each number with the digits that resolve ``quantum`` (at most 16)."""
+    def one(v):
+        v = float(v)
+        if abs(v) < quantum:
+            return "0.0"
+        n = int(np.clip(np.floor(np.log10(abs(v))) - np.floor(np.log10(quantum)) + 1, 1, 16))
+        return f"{v:.{n}g}"
+
+    if a.ndim == 1:
+        return "(" + ", ".join(one(v) for v in a) + ",)"
+    rows = [indent + "    " + _fmt_q(r, quantum, "") + "," for r in a]
+    return "(\n" + "\n".join(rows) + "\n" + indent + ")"
 
 
 def _fmt(a: np.ndarray, indent: str) -> str:
@@ -235,7 +442,7 @@ def render(tables: dict | None = None) -> str:
     t = build_tables() if tables is None else tables
     lines = [
         '"""Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= '
-        f'{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {LOG_FROM:g}.\n',
+        f'{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}.\n',
         "GENERATED by `zener-sym exact-table`: DO NOT EDIT. Built by zener_sym.exact.table_build from",
         f"scipy {scipy.__version__} solves at rtol {RTOL:g}; `zener-sym exact-table --check` rebuilds and",
         "compares numerically (the node values come from a floating-point integrator, so the bytes",
@@ -245,7 +452,12 @@ def render(tables: dict | None = None) -> str:
         f"INPUTS_HASH = {inputs_hash()!r}",
         f"LAM_PIECES = {LAM_PIECES!r}",
         f"LOG_FROM = {LOG_FROM!r}",
+        f"HISTORY_TO = {HISTORY_TO!r}",
         f"C_STRETCH = {C_STRETCH!r}",
+        f"C_END = {C_END!r}",
+        f"S_ORBIT = {S_ORBIT!r}",
+        f"S_TRANSIENT = {S_TRANSIENT!r}",
+        f"N_SUB = {N_SUB!r}",
         "",
         "#: field -> one tuple of Chebyshev coefficients per lambda piece",
         "SUMMARY = {",
@@ -256,13 +468,16 @@ def render(tables: dict | None = None) -> str:
             lines.append("        " + _fmt(c, "        ") + ",")
         lines.append("    ),")
     lines += ["}", "",
-              "#: (time piece, field) -> one coefficient matrix [time degree][lambda degree] per lambda piece",
-              "#: up to LOG_FROM",
+              "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
+              "#: coefficient matrix [time degree][lambda degree]",
               "HISTORY = {"]
     for key in sorted(t["history"]):
         lines.append(f"    {key!r}: (")
-        for c in t["history"][key]:
-            lines.append("        " + _fmt(c, "        ") + ",")
+        for subs, wts in zip(t["history"][key], t["weights"][key]):
+            lines.append("        (")
+            for c, wt in zip(subs, wts):
+                lines.append("            " + _fmt_q(c, HISTORY_QUANTUM / wt, "            ") + ",")
+            lines.append("        ),")
         lines.append("    ),")
     lines += ["}", ""]
     return "\n".join(lines)
@@ -277,16 +492,40 @@ def table_path() -> pathlib.Path:
 def compare(stored: dict, fresh: dict) -> list[str]:
     """Differences beyond CHECK_RTOL between two tables, as readable lines (empty: they agree)."""
     bad = []
+
+    def flat(arrays):  # summary: one array per lambda piece; history: one per (piece, sub-piece)
+        out = []
+        for c in arrays:
+            if isinstance(c, tuple) and not c:  # no piece M below LOG_FROM
+                continue
+            if isinstance(c, tuple) and not np.isscalar(c[0]) and np.ndim(c[0]) == 2:
+                out.extend(c)
+            else:
+                out.append(c)
+        return out
+
+    def flat_w(weights):
+        return [w for subs in weights for w in subs]
+
     for kind in ("summary", "history"):
         for key in fresh[kind]:
-            for i, (c_new, c_old) in enumerate(zip(fresh[kind][key], stored[kind][key])):
+            new, old = flat(fresh[kind][key]), flat(stored[kind][key])
+            quanta = ([HISTORY_QUANTUM / w for w in flat_w(fresh["weights"][key])]
+                      if kind == "history" and "weights" in fresh else [0.0] * len(new))
+            if len(new) != len(old):
+                bad.append(f"{kind} {key}: {len(new)} arrays, the stored table has {len(old)}")
+                continue
+            for i, (c_new, c_old, q) in enumerate(zip(new, old, quanta)):
                 c_old = np.asarray(c_old, dtype=float)
                 shape = tuple(max(p, q) for p, q in zip(c_new.shape, c_old.shape))
                 a, b = np.zeros(shape), np.zeros(shape)
                 a[tuple(slice(0, n) for n in c_new.shape)] = c_new
                 b[tuple(slice(0, n) for n in c_old.shape)] = c_old
-                err = np.abs(a - b).max() / np.abs(a).max()
+                # history: a change that moves the field by less than HISTORY_TRIM of its scale
+                # (the trimming and rounding level) passes too
+                floor = q * HISTORY_TRIM / HISTORY_QUANTUM
+                err = np.abs(a - b).max() / max(np.abs(a).max(), floor / CHECK_RTOL)
                 if not err <= CHECK_RTOL:
-                    bad.append(f"{kind} {key} lambda piece {i}: relative difference {err:.2e} "
+                    bad.append(f"{kind} {key} array {i}: relative difference {err:.2e} "
                                f"> {CHECK_RTOL:g}")
     return bad

@@ -4,11 +4,10 @@ high precision (mpmath).
 ``backend``:
 
 ``"auto"`` (default)
-    summaries for every lambda the model accepts, [0, 1000] (``zener_sym.exact.table.LAM_MIN``,
-    ``LAM_MAX``), and histories for lambda in [0, 5] (``HISTORY_LAM_MAX``) are evaluated from the
-    tables (error bounds ``zener_sym.exact.table.SUMMARY_RTOL``, ``HISTORY_ATOL``); histories at
-    larger lambda are integrated with scipy. Giving ``rtol`` or ``method`` (integrator options)
-    integrates all.
+    summaries and histories for every lambda the model accepts, [0, 1000]
+    (``zener_sym.exact.table.LAM_MIN``, ``LAM_MAX``, ``HISTORY_LAM_MAX``), are evaluated from the
+    tables (error bounds ``zener_sym.exact.table.SUMMARY_RTOL``, ``HISTORY_ATOL``). Giving
+    ``rtol`` or ``method`` (integrator options) integrates all.
 ``"table"``
     tables only; lambda outside their range is a ValueError (never extrapolated).
 ``"scipy"``
@@ -42,7 +41,7 @@ BACKENDS = ("auto", "table", "scipy", "mpmath")
 class ExactModel(Model):
     name = "exact"
     description = ("Zener's equation (10) solved exactly: Chebyshev tables (summary for "
-                   "0 <= lambda <= 1000, history for 0 <= lambda <= 5), direct integration otherwise")
+                   "0 <= lambda <= 1000, summary and history), direct integration on request")
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m",
                       "impulse", "int_F2", "xi")
     history_fields = ("delta", "velocity", "force", "impulse")
@@ -53,7 +52,7 @@ class ExactModel(Model):
     def _split(self, lam, options, history=False):
         """Mask of lambda to take from the tables, and the options left for integration.
 
-        The summary tables cover [0, 1000], the history tables [0, 5] (``history=True``)."""
+        The summary and history tables both cover [0, 1000] (``history=True``: the history's)."""
         in_range = _fast.history_in_range if history else _fast.in_range
         top = _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
         options = dict(options)

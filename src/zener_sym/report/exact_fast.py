@@ -30,8 +30,9 @@ def section() -> str:
     return (
         "## Fast exact model (Chebyshev tables)\n\n"
         f"Default of `model=\"exact\"`: summaries for {exact_fast.LAM_MIN:g} <= lambda <= "
-        f"{exact_fast.LAM_MAX:g}, histories for lambda <= {exact_fast.HISTORY_LAM_MAX:g} "
-        "(histories beyond are integrated). Documented bounds: summary fields "
+        f"{exact_fast.LAM_MAX:g}, histories for lambda <= {exact_fast.HISTORY_LAM_MAX:g}"
+        + (" (histories beyond are integrated)" if exact_fast.HISTORY_LAM_MAX < exact_fast.LAM_MAX
+           else "") + ". Documented bounds: summary fields "
         f"{exact_fast.SUMMARY_RTOL:g} relative, history {exact_fast.HISTORY_ATOL:g} of each "
         "field's scale. Live check against the scipy solver at rtol 1e-13 (worst relative error "
         "of delta_m, tau_dc, tau_d, e, int_F2):\n\n"

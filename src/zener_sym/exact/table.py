@@ -24,7 +24,6 @@ import importlib
 
 import numpy as np
 
-from ..ham.chebyshev import clenshaw_take
 from . import table_build as _build
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
@@ -91,7 +90,50 @@ def _tables():
             # [lambda piece, field, degree], zero-padded: all fields in one pass
             "summary": _stack2([_pad_rows([v[p] for v in t.SUMMARY.values()])
                                for p in range(len(t.LAM_PIECES) - 1)]),
-            "history": {k: _stack(v) for k, v in t.HISTORY.items()}}
+            "history": _history_layout(t.HISTORY, log)}
+
+
+def _history_layout(history, log) -> dict:
+    """The history coefficients arranged for ``history``: per time piece and lambda piece one
+    array [field * deg + time degree, lambda degree, sub-piece] (deg: the time piece's largest
+    degree; f's coefficients, then I's), the time direction converted from
+    Chebyshev to monomial coefficients in the sub-piece's x (so the evaluation is Horner's rule,
+    three passes over the points per degree instead of Clenshaw's four; on a sub-piece the
+    coefficients fall fast, so the conversion loses no digits that matter, tested against the
+    Chebyshev sum in tests/test_exact_fast.py)."""
+    n_lam = len(log)
+    layout = {}
+    for piece in _build.TIME_PIECES:
+        st = {k: _stack(history[(piece, k)]) for k in _build.HISTORY_KEYS}  # [lp, sub, j, k]
+        deg = max(a.shape[2] for a in st.values())
+        n_sub = _build.N_SUB[piece]
+        conv = np.zeros((deg, deg))  # monomial = conv @ Chebyshev
+        for j in range(deg):
+            e = np.zeros(j + 1)
+            e[j] = 1.0
+            conv[: j + 1, j] = np.polynomial.chebyshev.cheb2poly(e)
+        fields = []
+        for k in _build.HISTORY_KEYS:
+            a = np.zeros((n_lam, n_sub, deg, max(x.shape[3] for x in st.values())))
+            a[: st[k].shape[0], : st[k].shape[1], : st[k].shape[2], : st[k].shape[3]] = st[k]
+            fields.append(np.einsum("ij,psjk->psik", conv, a))
+        blk = np.stack(fields, axis=2)  # [lp, sub, field, deg, k]
+        # per lambda piece [field * deg + time degree, lambda degree, sub-piece], trimmed in
+        # lambda degree; None where the piece has no coefficients (piece M below LOG_FROM)
+        per = []
+        for p in range(n_lam):
+            if not len(history[(piece, "f")][p]):
+                per.append(None)
+                continue
+            b = blk[p].reshape(n_sub, 2 * deg, -1)  # [sub, field * deg + j, k]
+            nz = np.flatnonzero(np.any(b != 0.0, axis=(0, 1)))
+            n_k = int(nz.max()) + 1 if nz.size else 1
+            per.append(np.ascontiguousarray(b[:, :, :n_k].transpose(1, 2, 0)))
+        # per lambda piece, the degree its trimmed coefficients need (Horner starts there)
+        need = np.array([max([np.shape(c)[0] for k in _build.HISTORY_KEYS
+                              for c in history[(piece, k)][p]] or [1]) for p in range(n_lam)])
+        layout[piece] = (per, n_sub, deg, need)
+    return layout
 
 
 def in_range(lam) -> np.ndarray:
@@ -158,23 +200,80 @@ def summary(lam) -> dict:
             "xi": 2.0 * lam * v["int_F2"]}
 
 
-def _time_coefficients(key, ip: np.ndarray, xl: np.ndarray) -> np.ndarray:
-    """Chebyshev coefficients in time, one row per (lambda, sub-piece), row = lambda index times
-    the number of sub-pieces plus the sub-piece: sum_k C[s, j, k] T_k(x_lambda).
+def _piece_coefficients(per, ip, tl_all, n_rows, n_sub):
+    """[field * deg + time degree, lambda * sub-piece]: one time piece's monomial coefficients
+    per line, sum_k C[c, k, s] T_k(x_lambda). lu is sorted, so each lambda piece's lines are one
+    slice; one stacked matrix product per lambda piece present."""
+    out = np.zeros((n_rows, len(ip), n_sub))
+    for p in np.unique(ip):
+        c = per[int(p)]
+        if c is None:
+            continue
+        a, b = np.searchsorted(ip, p), np.searchsorted(ip, p, side="right")
+        tl = tl_all[a:b, : c.shape[1]]  # T_k(x_lambda), [lambda, k]
+        # one small matrix product per coefficient (a stack of them): lambda x k times
+        # k x sub-piece, written straight into the [coefficient, lambda, sub-piece] layout
+        np.matmul(tl, c, out=out[:, a:b])
+    return out.reshape(n_rows, -1)
 
-    Plain broadcasting, no BLAS: the sizes are small and a threaded matmul only adds overhead.
-    """
-    c = _tables()["history"][key]
-    tl = np.polynomial.chebyshev.chebvander(xl, c.shape[3] - 1)  # [lambda, k]
-    out = np.einsum("lk,lsjk->lsj", tl, c[ip], optimize=False)
-    return out.reshape(-1, out.shape[2])
+
+def _horner_rows(cT, rows, x, deg, need):
+    """f and I at the points: cT[j, r] is the coefficient of x^j of f on row r, cT[deg + j, r]
+    that of I (zero beyond ``need``). Horner's rule from degree need - 1, each step gathering
+    the points' coefficients by row into one buffer and adding them in place (contiguous
+    passes; gathering each point's whole row once and reading it by columns was slower)."""
+    f, i = cT[need - 1].take(rows), cT[deg + need - 1].take(rows)
+    tmp = np.empty_like(f)
+    for j in range(need - 2, -1, -1):
+        f *= x
+        f += np.take(cT[j], rows, out=tmp)
+        i *= x
+        i += np.take(cT[deg + j], rows, out=tmp)
+    return f, i
 
 
-def _clenshaw_rows(rows_coef, idx, x):
-    """sum_j rows_coef[idx, j] T_j(x) pointwise (Clenshaw), each point taking its coefficient
-    from its row by index: no (points x degree) temporaries (a Vandermonde matrix and gathered
-    rows cost about 4x more here)."""
-    return clenshaw_take(np.ascontiguousarray(rows_coef.T), idx, x)
+def _lin_log_rows(t, li, params):
+    """``table_build.lin_log`` at the points t of lines li, skipping a term whose scale is
+    infinite on every line (a zero term: piece A has no linear term, piece M no start log)."""
+    start, end, c1, c2, c3 = (np.asarray(q, dtype=float) for q in params)
+    span = end - start
+    with np.errstate(invalid="ignore", divide="ignore"):  # lines without this piece: unused
+        u0 = -np.log1p(span / c2)
+        u1 = np.log1p(span / c1) + span / c3
+    s_, e_ = start.take(li), end.take(li)
+    u = np.zeros(t.shape)
+    if not np.isinf(c1).all():
+        u += np.log1p((t - s_) / c1.take(li))
+    if not np.isinf(c3).all():
+        u += (t - s_) / c3.take(li)
+    if not np.isinf(c2).all():
+        u -= np.log1p((e_ - t) / c2.take(li))
+    u -= u0.take(li)
+    u /= (u1 - u0).take(li)
+    return u
+
+
+def _scaled_maps(name, k, lu, log, v, tau_s):
+    """Per-line constants of piece ``name``'s reduced time times k, z = k y (``table_build``:
+    C z = sqrt(a t); B z = sqrt(a (tau_d - t)); A and M z = a (u(t) - u0) with
+    u = ln(1 + (t - s) i1) + (t - s) i3 - ln(1 + (e - t) i2) from ``lin_log``, i = 1/c (0 for an
+    infinite c: the term vanishes; a term that vanishes on every line is skipped))."""
+    if name == "C":
+        return {"a": k * k / v["tau_dc"]}
+    if name == "B":
+        return {"a": k * k / (v["tau_d"] - v["tau_w0"]), "d": v["tau_d"]}
+    start, end, c1, c2, c3 = (np.broadcast_to(np.asarray(q, dtype=float), lu.shape)
+                              for q in _build.map_params(name, lu, log, v["tau_dc"], tau_s,
+                                                         v["tau_w0"]))
+    with np.errstate(invalid="ignore", divide="ignore"):  # lines without this piece: unused
+        span = end - start
+        u0 = -np.log1p(span / c2)
+        u1 = np.log1p(span / c1) + span / c3
+        out = {"a": k / (u1 - u0), "u0": u0, "s": start, "e": end}
+        for key, c in (("i1", c1), ("i2", c2), ("i3", c3)):
+            if not np.isinf(c).all():
+                out[key] = 1.0 / c
+    return out
 
 
 def history(lam, tau) -> dict:
@@ -201,42 +300,63 @@ def history(lam, tau) -> dict:
                          f"[{LAM_MIN:g}, {HISTORY_LAM_MAX:g}]; integrate instead (backend='scipy')")
     tau = tau.ravel()
     v, ip, xl = _core(lu, history=True)
-    tau_dc, tau_w0, tau_d = v["tau_dc"][inv], v["tau_w0"][inv], v["tau_d"][inv]
-    delta = np.zeros(tau.shape)
-    imp = (1.0 + v["e"])[inv]  # after the contact the impulse keeps its final value
-    piece = np.full(tau.shape, -1)
     log = _tables()["log"][ip]
-    tau_s_u = _build.split_time(lu, log, v["tau_dc"], v["tau_w0"])
-    tau_s = tau_s_u[inv]
-    piece[tau <= tau_dc] = 0
-    piece[(tau > tau_dc) & (tau < tau_s)] = 1
-    piece[(tau >= tau_s) & (tau < tau_w0)] = 3
-    piece[(tau >= tau_w0) & (tau < tau_d)] = 2
-    for n, name in ((0, "C"), (1, "A"), (3, "M"), (2, "B")):
-        m = piece == n
-        if not m.any():
+    tau_s = _build.split_time(lu, log, v["tau_dc"], v["tau_w0"])
+    # piece of each point: 0 C, 1 A, 2 M (empty for lambda <= LOG_FROM, tau_s = tau_w0), 3 B,
+    # 4 after the contact
+    piece = (tau > v["tau_dc"].take(inv)).view(np.int8)
+    piece += tau >= tau_s.take(inv)
+    piece += tau >= v["tau_w0"].take(inv)
+    piece += tau >= v["tau_d"].take(inv)
+    delta = np.zeros(tau.shape)
+    imp = (1.0 + v["e"]).take(inv)  # after the contact the impulse keeps its final value
+    layout = _tables()["history"]
+    tl_all = np.polynomial.chebyshev.chebvander(xl, max(
+        c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)
+    for n, name in enumerate(_build.TIME_PIECES):
+        at = np.flatnonzero(piece == n)
+        if at.size == 0:
             continue
-        t, dc, w0, d = tau[m], tau_dc[m], tau_w0[m], tau_d[m]
-        im = inv[m]
+        t, li = tau.take(at), inv.take(at)
+        per, k, deg, need = layout[name]
+        m = _scaled_maps(name, k, lu, log, v, tau_s)
         if name == "C":
-            y = np.sqrt(t / dc)
+            z = t * m["a"].take(li)
+            np.sqrt(z, out=z)
         elif name == "B":
-            y = np.sqrt((d - t) / (d - w0))
-        else:  # A or M: only reached when the piece is not empty
-            params = _build.map_params(name, lu, log, v["tau_dc"], tau_s_u, v["tau_w0"])
-            y = _build.lin_log(t, *(np.asarray(q)[im] for q in params))
-        k = _build.N_SUB[name]
-        sub = np.clip(np.floor(y * k), 0, k - 1)
-        xt = np.clip(2.0 * (y * k - sub) - 1.0, -1.0, 1.0)
-        rows = im * k + sub.astype(np.intp)
-        f = _clenshaw_rows(_time_coefficients((name, "f"), ip, xl), rows, xt)
-        imp[m] = _clenshaw_rows(_time_coefficients((name, "I"), ip, xl), rows, xt)
-        if name == "C":
-            delta[m] = t * np.exp(f)
-        elif name == "B":
-            delta[m] = (d - t) * np.exp(f)
+            d = m["d"].take(li)
+            z = d - t
+            z *= m["a"].take(li)
+            np.sqrt(z, out=z)
         else:
-            delta[m] = np.exp(f)
+            ts = t - m["s"].take(li)
+            z = -m["u0"].take(li)
+            if "i1" in m:
+                z += np.log1p(ts * m["i1"].take(li))
+            if "i3" in m:
+                z += ts * m["i3"].take(li)
+            if "i2" in m:
+                te = m["e"].take(li)
+                te -= t
+                te *= m["i2"].take(li)
+                z -= np.log1p(te, out=te)
+            z *= m["a"].take(li)
+        sub = z.astype(np.intp)  # z >= 0: truncation is floor
+        np.minimum(sub, k - 1, out=sub)
+        x = z - sub
+        x *= 2.0
+        x -= 1.0
+        rows = li * k + sub
+        cT = _piece_coefficients(per, ip, tl_all, 2 * deg, k)  # [f's then I's, lambda * sub]
+        f, i = _horner_rows(cT, rows, x, deg, int(need[ip].max()))
+        g = np.exp(f, out=f)
+        if name == "C":
+            g *= t
+        elif name == "B":
+            g *= d - t
+        delta[at] = g
+        imp[at] = i
     delta = delta.reshape(shape)
     imp = imp.reshape(shape)
-    return {"delta": delta, "impulse": imp, "velocity": 1.0 - imp, "force": delta**1.5}
+    return {"delta": delta, "impulse": imp, "velocity": 1.0 - imp,
+            "force": delta * np.sqrt(delta)}

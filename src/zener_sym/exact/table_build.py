@@ -73,9 +73,10 @@ MATCH_DECAYS = 40.0
 N_LAM = 22
 #: Sub-pieces (equal parts of the reduced time y) per time piece; piece M exists on the ln-lambda
 #: pieces only (see ``split_time``).
-N_SUB = {"C": 2, "A": 8, "M": 10, "B": 2}
-#: Chebyshev points per sub-piece of each time piece.
-N_TIME = {"C": 20, "A": 16, "M": 16, "B": 20}
+N_SUB = {"C": 12, "A": 16, "M": 16, "B": 12}
+#: Chebyshev points per sub-piece of each time piece: low degrees keep the evaluation cheap
+#: (each degree costs one pass over the points), more sub-pieces keep the accuracy.
+N_TIME = {"C": 10, "A": 12, "M": 16, "B": 10}
 #: Time scale of the logarithmic stretch of piece A at its start (tau_dc), for lambda <= LOG_FROM;
 #: above, C_STRETCH (LOG_FROM / lambda)^(2/3), the relaxation time 1 / (1.5 lambda delta^{1/2})
 #: of the loading transient (delta ~ lambda^(-2/3)).

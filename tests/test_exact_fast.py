@@ -195,3 +195,67 @@ def test_history_is_physical(lam, frac):
     assert np.all(np.diff(h.impulse) >= -1e-12)
     assert np.all(h.impulse <= 1 + s.e + 1e-12)
     assert np.all(h.delta[tau >= s.tau_d] == 0)
+
+
+def _chebyshev_history(lam, tau):
+    """delta and I at (lam, tau) straight from the stored Chebyshev coefficients (chebval2d in
+    (x_time, x_lambda)), with the maps of ``table_build``: the second route to the same table
+    that the fast evaluation (monomials, Horner, scaled maps) must reproduce."""
+    from numpy.polynomial.chebyshev import chebval2d
+
+    s = exact_fast.summary(np.array([lam]))
+    tau_dc, tau_d = s["tau_dc"][0], s["tau_d"][0]
+    edges = np.asarray(build.LAM_PIECES)
+    p = min(int(np.searchsorted(edges, lam, side="right")) - 1, len(edges) - 2)
+    log = build.is_log_piece(edges[p])
+    a, b = (np.log(edges[p]), np.log(edges[p + 1])) if log else (edges[p], edges[p + 1])
+    xl = (2 * (np.log(lam) if log else lam) - a - b) / (b - a)
+    # tau_w0 from the summary table's own field, as the fast path forms it
+    v, _, _ = exact_fast._core(np.array([lam]))
+    tau_w0 = v["tau_w0"][0]
+    tau_s = float(build.split_time(lam, log, tau_dc, tau_w0))
+    if tau <= tau_dc:
+        piece, y = "C", np.sqrt(tau / tau_dc)
+    elif tau < tau_s:
+        piece = "A"
+    elif tau < tau_w0:
+        piece = "M"
+    else:
+        piece, y = "B", np.sqrt((tau_d - tau) / (tau_d - tau_w0))
+    if piece in "AM":
+        y = build.lin_log(tau, *(float(q) for q in build.map_params(
+            piece, lam, log, tau_dc, tau_s, tau_w0)))
+    k = build.N_SUB[piece]
+    j = min(int(y * k), k - 1)
+    xt = 2 * (y * k - j) - 1
+    f, imp = (chebval2d(xt, xl, np.asarray(exact_table.HISTORY[(piece, key)][p][j], float))
+              for key in ("f", "I"))
+    pre = {"C": tau, "A": 1.0, "M": 1.0, "B": tau_d - tau}[piece]
+    return pre * np.exp(f), imp
+
+
+@pytest.mark.parametrize("lam", [0.0, 0.61, 2.2, 4.97, 5.0, 7.3, 55.0, 640.0])
+def test_fast_evaluation_reproduces_the_chebyshev_coefficients(lam):
+    """The fast history (monomial coefficients, Horner's rule, per-line map constants) against
+    the stored Chebyshev coefficients summed directly, at times in every time piece."""
+    s = zs.summary(lam, model="exact")
+    tau = np.concatenate([np.linspace(0.0, s.tau_d, 60)[1:-1], [s.tau_dc, 1e-6 * s.tau_d]])
+    h = exact_fast.history(np.full(tau.shape, lam), tau)
+    for t, d, i in zip(tau, h["delta"], h["impulse"]):
+        d_ref, i_ref = _chebyshev_history(lam, t)
+        assert abs(d - d_ref) <= 1e-13 * s.delta_m, (lam, t, d, d_ref)
+        assert abs(i - i_ref) <= 1e-13, (lam, t, i, i_ref)
+
+
+def test_line_and_scattered_evaluation_agree():
+    """A broadcast lambda column (one lambda per line, the piece found by broadcasting) and
+    the same points scattered in any order give the same numbers."""
+    lam = np.array([0.0, 0.3, 4.0, 5.0, 17.0, 999.0])
+    s = zs.summary(lam, model="exact")
+    tau = s.tau_d[:, None] * np.linspace(0.0, 1.1, 37)[None, :]
+    grid = exact_fast.history(np.broadcast_to(lam[:, None], tau.shape), tau)
+    perm = np.random.default_rng(5).permutation(tau.size)
+    flat = exact_fast.history(np.broadcast_to(lam[:, None], tau.shape).ravel()[perm],
+                              tau.ravel()[perm])
+    for f in ("delta", "impulse", "force"):
+        np.testing.assert_allclose(flat[f], grid[f].ravel()[perm], rtol=1e-14, atol=1e-300)

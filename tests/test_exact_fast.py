@@ -140,7 +140,7 @@ def test_table_is_fresh_hash():
 def test_compare_detects_a_changed_coefficient():
     stored = {"summary": exact_table.SUMMARY, "history": exact_table.HISTORY}
     fresh = {"summary": {k: [np.asarray(c, float) for c in v] for k, v in stored["summary"].items()},
-             "history": {k: [tuple(np.asarray(c, float) for c in subs) for subs in v]
+             "history": {k: [tuple(build.parse_array(c) for c in subs) for subs in v]
                          for k, v in stored["history"].items()}}
     assert build.compare(stored, fresh) == []
     fresh["summary"]["log_e"][2] = fresh["summary"]["log_e"][2].copy()
@@ -228,7 +228,7 @@ def _chebyshev_history(lam, tau):
     k = build.N_SUB[piece]
     j = min(int(y * k), k - 1)
     xt = 2 * (y * k - j) - 1
-    f, imp = (chebval2d(xt, xl, np.asarray(exact_table.HISTORY[(piece, key)][p][j], float))
+    f, imp = (chebval2d(xt, xl, build.parse_array(exact_table.HISTORY[(piece, key)][p][j]))
               for key in ("f", "I"))
     pre = {"C": tau, "A": 1.0, "M": 1.0, "B": tau_d - tau}[piece]
     return pre * np.exp(f), imp

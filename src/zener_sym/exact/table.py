@@ -50,7 +50,8 @@ def _stack_summary(mats) -> np.ndarray:
 def _stack(pieces) -> np.ndarray:
     """One zero-padded array [lambda piece, sub-piece, time degree, lambda degree] (trimming
     varies)."""
-    mats = [[np.asarray(c, dtype=float) for c in subs] for subs in pieces]
+    mats = [[_build.parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float)
+             for c in subs] for subs in pieces]
     flat = [c for subs in mats for c in subs]
     out = np.zeros((len(mats), max(len(subs) for subs in mats), max(c.shape[0] for c in flat),
                     max(c.shape[1] for c in flat)))
@@ -70,7 +71,7 @@ def _pad_rows(rows) -> np.ndarray:
 
 @functools.cache
 def _tables():
-    """The generated table, loaded on first use (parsing it costs ~0.1 s without a .pyc)."""
+    """The generated table, loaded on first use (importing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
     if (tuple(t.LAM_PIECES) != tuple(_build.LAM_PIECES) or t.C_STRETCH != _build.C_STRETCH
             or getattr(t, "LOG_FROM", None) != _build.LOG_FROM
@@ -132,8 +133,9 @@ def _history_layout(history, log) -> dict:
             n_k = int(nz.max()) + 1 if nz.size else 1
             per.append(np.ascontiguousarray(b[:, :, :n_k].transpose(1, 2, 0)))
         # per lambda piece, the degree its trimmed coefficients need (Horner starts there)
-        need = np.array([max([np.shape(c)[0] for k in _build.HISTORY_KEYS
-                              for c in history[(piece, k)][p]] or [1]) for p in range(n_lam)])
+        need = np.array([max([int(c.split(" ", 1)[0]) if isinstance(c, str) else np.shape(c)[0]
+                              for k in _build.HISTORY_KEYS for c in history[(piece, k)][p]]
+                             or [1]) for p in range(n_lam)])
         layout[piece] = (per, n_sub, deg, need)
     return layout
 

@@ -414,19 +414,25 @@ def inputs_hash() -> str:
     return h.hexdigest()[:16]
 
 
-def _fmt_q(a: np.ndarray, quantum: float, indent: str) -> str:
-    """Like ``_fmt``, each number with the digits that resolve ``quantum`` (at most 16)."""
+def _fmt_q(a: np.ndarray, quantum: float) -> str:
+    """A 2-D array as the string "rows cols v v ...", each number with the digits that resolve
+    ``quantum`` (at most 16). A string rather than a tuple literal: Python compiles a module of
+    80 000 float literals in about a second (every process, where bytecode is not cached),
+    numpy parses the strings in milliseconds (``parse_array``)."""
     def one(v):
         v = float(v)
         if abs(v) < quantum:
-            return "0.0"
+            return "0"
         n = int(np.clip(np.floor(np.log10(abs(v))) - np.floor(np.log10(quantum)) + 1, 1, 16))
         return f"{v:.{n}g}"
 
-    if a.ndim == 1:
-        return "(" + ", ".join(one(v) for v in a) + ",)"
-    rows = [indent + "    " + _fmt_q(r, quantum, "") + "," for r in a]
-    return "(\n" + "\n".join(rows) + "\n" + indent + ")"
+    return f"{a.shape[0]} {a.shape[1]} " + " ".join(one(v) for v in a.ravel())
+
+
+def parse_array(text: str) -> np.ndarray:
+    """The 2-D array written by ``_fmt_q``."""
+    v = np.array(text.split(), dtype=float)
+    return v[2:].reshape(int(v[0]), int(v[1]))
 
 
 def _fmt(a: np.ndarray, indent: str) -> str:
@@ -470,14 +476,15 @@ def render(tables: dict | None = None) -> str:
         lines.append("    ),")
     lines += ["}", "",
               "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
-              "#: coefficient matrix [time degree][lambda degree]",
+              "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
+              "#: (table_build.parse_array)",
               "HISTORY = {"]
     for key in sorted(t["history"]):
         lines.append(f"    {key!r}: (")
         for subs, wts in zip(t["history"][key], t["weights"][key]):
             lines.append("        (")
             for c, wt in zip(subs, wts):
-                lines.append("            " + _fmt_q(c, HISTORY_QUANTUM / wt, "            ") + ",")
+                lines.append(f"            {_fmt_q(c, HISTORY_QUANTUM / wt)!r},")
             lines.append("        ),")
         lines.append("    ),")
     lines += ["}", ""]
@@ -499,7 +506,9 @@ def compare(stored: dict, fresh: dict) -> list[str]:
         for c in arrays:
             if isinstance(c, tuple) and not c:  # no piece M below LOG_FROM
                 continue
-            if isinstance(c, tuple) and not np.isscalar(c[0]) and np.ndim(c[0]) == 2:
+            if isinstance(c, tuple) and isinstance(c[0], str):
+                out.extend(parse_array(x) for x in c)
+            elif isinstance(c, tuple) and not np.isscalar(c[0]) and np.ndim(c[0]) == 2:
                 out.extend(c)
             else:
                 out.append(c)

@@ -148,3 +148,20 @@ def test_force_end_solver_checks_its_own_options():
             force_end.solve(1.0, rtol=bad)
     with pytest.raises(ValueError, match="method must be one of"):
         force_end.solve(1.0, method="XYZ")
+
+
+@pytest.mark.parametrize("backend, end", [("auto", "delta"), ("scipy", "delta"), ("auto", "force"),
+                                          ("scipy", "force")])
+def test_restitution_is_one_at_lambda_zero_and_never_above(backend, end):
+    """Energy conservation at lambda = 0 gives e = 1 exactly (the integrated end velocity gave
+    1 + 1.2e-14), and no lambda gives e > 1; e agrees with sqrt(1 - xi) where xi < 1/2, both
+    checked against the mpmath path at one lambda off any node."""
+    opts = {"backend": backend} if end == "delta" else {"backend": backend, "contact_end": end}
+    s0 = zs.summary(0.0, model="exact", **opts)
+    assert s0.e == 1.0 and s0.xi == 0.0 and s0.impulse == 2.0
+    lam = np.r_[np.geomspace(1e-15, 1e-3, 7), 0.123, 0.77]
+    s = zs.summary(lam, model="exact", **opts)
+    assert np.all(s.e <= 1.0) and np.all(s.e > 0.0)
+    ref = (exact_mp.solve(0.77, dps=25) if end == "delta"
+           else force_end.solve_mp(0.77, dps=25))
+    assert abs(s.e[-1] - float(ref.e)) <= 1e-11 * float(ref.e)

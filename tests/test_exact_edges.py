@@ -13,7 +13,7 @@ import pytest
 
 import zener_sym as zs
 from zener_sym.exact import mp as exact_mp
-from zener_sym.exact import solver
+from zener_sym.exact import force_end, solver
 
 
 @pytest.fixture(scope="module")
@@ -107,9 +107,10 @@ def test_solver_checks_its_own_options():
 
 
 def _worst_call(args):
-    lam, method, rtol = args
+    lam, method, rtol, end = args
+    solve = force_end.solve if end == "force" else solver.solve
     try:
-        solver.solve(lam, rtol=rtol, method=method)
+        solve(lam, rtol=rtol, method=method)
         return "ok"
     except (RuntimeError, ValueError) as exc:  # a clear failure is acceptable; a hang is not
         return type(exc).__name__
@@ -120,9 +121,10 @@ def test_worst_options_finish_under_a_time_limit():
     method at the smallest rtol; the implicit methods) at lambda = 0 and 20 each end, with a
     value or an error, within the limit (in a worker process, so a hang fails the test). The
     evaluation budget grows with lambda; at 1000 the worst case (RK23) ends in about 30 s."""
-    cases = [(0.0, "RK23", solver.RTOL_MIN), (20.0, "RK23", solver.RTOL_MIN),
-             (20.0, "BDF", solver.RTOL_MIN), (0.0, "LSODA", solver.RTOL_MIN),
-             (20.0, "DOP853", solver.RTOL_MAX)]
+    cases = [(0.0, "RK23", solver.RTOL_MIN, "delta"), (20.0, "RK23", solver.RTOL_MIN, "delta"),
+             (20.0, "BDF", solver.RTOL_MIN, "delta"), (0.0, "LSODA", solver.RTOL_MIN, "delta"),
+             (20.0, "DOP853", solver.RTOL_MAX, "delta"), (20.0, "RK23", solver.RTOL_MIN, "force"),
+             (5.0, "BDF", solver.RTOL_MIN, "force")]
     ctx = mp_proc.get_context("spawn")
     with ctx.Pool(1) as pool:
         res = pool.map_async(_worst_call, cases)
@@ -136,3 +138,13 @@ def test_evaluation_budget_stops_a_runaway_solve(monkeypatch):
     monkeypatch.setattr(solver, "eval_budget", lambda lam: 50)
     with pytest.raises(RuntimeError, match="right-hand-side evaluations"):
         solver.solve(1.0)
+    with pytest.raises(RuntimeError, match="right-hand-side evaluations"):
+        force_end.solve(1.0)  # the grains' end of contact spends the same budget
+
+
+def test_force_end_solver_checks_its_own_options():
+    for bad in (float("nan"), float("inf"), 0.0, -1e-8, "a", None):
+        with pytest.raises(ValueError, match="rtol"):
+            force_end.solve(1.0, rtol=bad)
+    with pytest.raises(ValueError, match="method must be one of"):
+        force_end.solve(1.0, method="XYZ")

@@ -14,7 +14,8 @@ from conftest import ROOT
 DOCTEST_MODULES = ["zener_sym", "zener_sym.api", "zener_sym.models.base", "zener_sym.scene.scene",
                    "zener_sym.scene.compare", "zener_sym.scene.units", "zener_sym.scene.checks",
                    "zener_sym.scene.materials", "zener_sym.scene.select",
-                   "zener_sym.scene.grains", "zener_sym.scene.lookup"]
+                   "zener_sym.scene.grains", "zener_sym.scene.lookup",
+                   "zener_sym.scene.stress_waves"]
 
 
 @pytest.mark.parametrize("name", DOCTEST_MODULES)

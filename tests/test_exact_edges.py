@@ -13,7 +13,7 @@ import pytest
 
 import zener_sym as zs
 from zener_sym.exact import mp as exact_mp
-from zener_sym.exact import solver
+from zener_sym.exact import force_end, solver
 from zener_sym.exact import table as exact_fast
 
 
@@ -118,9 +118,10 @@ def test_solver_checks_its_own_options():
 
 
 def _worst_call(args):
-    lam, method, rtol = args
+    lam, method, rtol, end = args
+    solve = force_end.solve if end == "force" else solver.solve
     try:
-        solver.solve(lam, rtol=rtol, method=method)
+        solve(lam, rtol=rtol, method=method)
         return "ok"
     except (RuntimeError, ValueError) as exc:  # a clear failure is acceptable; a hang is not
         return type(exc).__name__
@@ -131,9 +132,10 @@ def test_worst_options_finish_under_a_time_limit():
     method at the smallest rtol; the implicit methods) at lambda = 0 and 20 each end, with a
     value or an error, within the limit (in a worker process, so a hang fails the test). The
     evaluation budget grows with lambda; at 1000 the worst case (RK23) ends in about 30 s."""
-    cases = [(0.0, "RK23", solver.RTOL_MIN), (20.0, "RK23", solver.RTOL_MIN),
-             (20.0, "BDF", solver.RTOL_MIN), (0.0, "LSODA", solver.RTOL_MIN),
-             (20.0, "DOP853", solver.RTOL_MAX)]
+    cases = [(0.0, "RK23", solver.RTOL_MIN, "delta"), (20.0, "RK23", solver.RTOL_MIN, "delta"),
+             (20.0, "BDF", solver.RTOL_MIN, "delta"), (0.0, "LSODA", solver.RTOL_MIN, "delta"),
+             (20.0, "DOP853", solver.RTOL_MAX, "delta"), (20.0, "RK23", solver.RTOL_MIN, "force"),
+             (5.0, "BDF", solver.RTOL_MIN, "force")]
     ctx = mp_proc.get_context("spawn")
     with ctx.Pool(1) as pool:
         res = pool.map_async(_worst_call, cases)
@@ -147,3 +149,30 @@ def test_evaluation_budget_stops_a_runaway_solve(monkeypatch):
     monkeypatch.setattr(solver, "eval_budget", lambda lam: 50)
     with pytest.raises(RuntimeError, match="right-hand-side evaluations"):
         solver.solve(1.0)
+    with pytest.raises(RuntimeError, match="right-hand-side evaluations"):
+        force_end.solve(1.0)  # the grains' end of contact spends the same budget
+
+
+def test_force_end_solver_checks_its_own_options():
+    for bad in (float("nan"), float("inf"), 0.0, -1e-8, "a", None):
+        with pytest.raises(ValueError, match="rtol"):
+            force_end.solve(1.0, rtol=bad)
+    with pytest.raises(ValueError, match="method must be one of"):
+        force_end.solve(1.0, method="XYZ")
+
+
+@pytest.mark.parametrize("backend, end", [("auto", "delta"), ("scipy", "delta"), ("auto", "force"),
+                                          ("scipy", "force")])
+def test_restitution_is_one_at_lambda_zero_and_never_above(backend, end):
+    """Energy conservation at lambda = 0 gives e = 1 exactly (the integrated end velocity gave
+    1 + 1.2e-14), and no lambda gives e > 1; e agrees with sqrt(1 - xi) where xi < 1/2, both
+    checked against the mpmath path at one lambda off any node."""
+    opts = {"backend": backend} if end == "delta" else {"backend": backend, "contact_end": end}
+    s0 = zs.summary(0.0, model="exact", **opts)
+    assert s0.e == 1.0 and s0.xi == 0.0 and s0.impulse == 2.0
+    lam = np.r_[np.geomspace(1e-15, 1e-3, 7), 0.123, 0.77]
+    s = zs.summary(lam, model="exact", **opts)
+    assert np.all(s.e <= 1.0) and np.all(s.e > 0.0)
+    ref = (exact_mp.solve(0.77, dps=25) if end == "delta"
+           else force_end.solve_mp(0.77, dps=25))
+    assert abs(s.e[-1] - float(ref.e)) <= 1e-11 * float(ref.e)

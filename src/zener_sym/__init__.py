@@ -14,6 +14,7 @@ from .scene.materials import ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TAB
 from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
 from .scene.compare import Comparison, compare
+from .scene.stress_waves import stress_wave_k, stress_wave_loss
 
 __version__ = "0.2.0"
 
@@ -29,4 +30,4 @@ __all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailab
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
            "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
            "compare", "Comparison", "__version__",
-           "viscoelastic_lambda", "grain_impact", "GrainImpact"]
+           "viscoelastic_lambda", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss"]

@@ -309,6 +309,59 @@ def _mueller_linear():
                    "$1 + e$ equals the exact 2 at $\\lambda = 0$")
 
 
+@claim("hunter_reed_k")
+def _hunter_reed_k():
+    """k of xi = k V0^{3/5} derived in derivation/stress_waves.py (the energy a point force
+    radiates into the glass half-space, with Hunter's sine (5) and Reed's sin^{3/2} (6)), then
+    the readings that come nearest the printed numbers."""
+    from zener_sym.derivation import stress_waves as dsw  # noqa: PLC0415 (offline derivation)
+
+    kh_p, kr_p = _f("hunter_reed_k", 0), _f("hunter_reed_k", 1)
+    t = P.TABLE1
+    pair = (t["E1"], t["nu1"], t["rho1"], t["E2"], t["nu2"], t["rho2"])
+    glass = (t["E2"], t["nu2"], t["rho2"]) * 2
+    with mp.workdps(30):
+        kh, kr = (float(dsw.k_coefficient(p, *pair)) for p in ("hunter", "reed"))
+        kh_gg, kr_gg = (float(dsw.k_coefficient(p, *glass)) for p in ("hunter", "reed"))
+        h_ratio = float(dsw.radiation_h(mp.mpf("0.3")) / dsw.radiation_h(mp.mpf(str(t["nu2"]))))
+        c_steel = float(dsw.equal_material_constant("hunter", mp.mpf("0.3")))
+    # Eq. (53) as printed, sin^3 instead of sin^{3/2}: J = int (d/dtau A sin^3(Omega tau))^2 dtau
+    A, Om, ph = sp.symbols("A Omega phi", positive=True)
+    j3 = sp.integrate(9 * A**2 * Om * sp.sin(ph) ** 4 * sp.cos(ph) ** 2, (ph, 0, sp.pi))
+    k_sin3 = kr * float(j3 / (sp.Rational(3, 2) * A**2 * Om))
+    c0 = float(np.sqrt(t["E2"] / t["rho2"]))
+    k_104 = 1.04 * c0 ** -0.6  # Hunter's steel constant applied with the glass's bar speed
+    first = "rounds" if rounds_to(kh * h_ratio, _n("hunter_reed_k", 0))[0] else "does not round"
+    ok_h, ev_h = rounds_to(kh, _n("hunter_reed_k", 0))
+    ok_r, ev_r = rounds_to(kr, _n("hunter_reed_k", 1))
+    readings = [
+        f"the radiation constant of $\\nu = 0.3$ (Hunter's steel) in place of the glass's 0.21: "
+        f"$k_{{\\rm Hunter}}$ = {kh * h_ratio:.5f}",
+        f"Eq. (53) as printed ($\\sin^3$): $k_{{\\rm Reed}}$ = {k_sin3:.5f}",
+        f"a glass sphere on glass (the plate's material for both bodies): {kh_gg:.5f} (Hunter), "
+        f"{kr_gg:.5f} (Reed)",
+        f"Hunter's steel form $1.04\\,(V_0/c_0)^{{3/5}}$ with the glass's $c_0 = \\sqrt{{E_2/\\rho_2}}$ "
+        f"= {c0:.0f} m/s: {k_104:.5f} (the derivation gives {c_steel:.4f} in place of 1.04 for steel)",
+    ]
+    return _result(ok_h and ok_r,
+                   f"$k_{{\\rm Hunter}}$ = {kh:.5f} ({100 * (kh / kh_p - 1):+.0f}% from {kh_p:g}), "
+                   f"$k_{{\\rm Reed}}$ = {kr:.5f} ({100 * (kr / kr_p - 1):+.0f}% from {kr_p:g})",
+                   f"$W = h(\\nu_2) / (2\\pi\\rho_2 c_2^3) \\int \\dot F^2 dt$ for a normal point force on "
+                   f"the glass half-space ($h$ from the Lamb kernel: body waves and the Rayleigh pole), "
+                   f"with Hertz's $\\delta_m$ (3), Hunter's sine (5) and Reed's $\\sin^{{3/2}}$ (6), "
+                   f"derived and checked in derivation/stress_waves.py; Table 1 values. Hunter: {ev_h}. "
+                   f"Reed: {ev_r}. Readings tried: " + "; ".join(readings) + f". The first {first}"
+                   f" to {kh_p:g}; the glass-on-glass and $1.04\\,(V_0/c_0)^{{3/5}}$ readings are "
+                   f"{100 * min(abs(x / kr_p - 1) for x in (kh_gg, kr_gg, k_104)):.0f}% to "
+                   f"{100 * max(abs(x / kr_p - 1) for x in (kh_gg, kr_gg, k_104)):.0f}% from {kr_p:g}; "
+                   f"no single reading gives both: with one half-space formula the "
+                   f"ratio $k_{{\\rm Reed}}/k_{{\\rm Hunter}}$ is the ratio of the pulses' "
+                   f"$\\int \\dot{{\\bar F}}^2 d\\tau$, {kr / kh:.3f} for every material, where the paper "
+                   f"has {kr_p / kh_p:.2f}.",
+                   "The paper gives no derivation of its two numbers, and Reed (1985) is not "
+                   "available here: Reed's pulse is read from the paper's Eq. (6)")
+
+
 @claim("int_F2_poly")
 def _intF2():
     lams = np.round(np.linspace(0.0, 0.5, 11), 10)

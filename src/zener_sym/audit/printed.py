@@ -289,6 +289,11 @@ ITEMS: tuple[Printed, ...] = (
                              r" to 38.72% ... [the impulse] is compared with Mueller's solution, showing a"
                              r" relative error between 12.60% and 52.63%",
            '0.3872, 0.1260, 0.5263', 'max F_m rel. error, impulse rel. error from, to'),
+    _claim("hunter_reed_k", r"Using the material properties in the present FEM simulation, we calculated"
+                            r" Hunter's coefficient is $k_{\text{Hunter}} \approx 0.0013$ and Reed's"
+                            r" coefficient is $k_{\text{Reed}} \approx 0.0058$ [$\xi = k V_0^{0.6}$ for"
+                            r" a sphere on a half-space, $V_0$ in m/s]",
+           '0.0013, 0.0058', 'k_Hunter, k_Reed'),
 )
 
 

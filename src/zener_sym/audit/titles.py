@@ -129,4 +129,5 @@ CLAIM_TITLES = {
     "claim:xi_V0^0.2": ("(72)", "xi proportional to V_0^0.2"),
     "claim:table1_lambda_range": ("Table 1", "the range of lambda"),
     "claim:mueller_linear": ("", "Mueller's model, its F_m and impulse errors"),
+    "claim:hunter_reed_k": ("(52), (53)", "Hunter's and Reed's coefficients k (Fig. 14)"),
 }

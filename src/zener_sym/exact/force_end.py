@@ -13,9 +13,14 @@ compression with delta + (3/2) lambda delta' = 0. The mapping to physical grains
   before the end of compression (during loading at large lambda);
 - ``velocity`` is the relative velocity delta' = 1 - impulse and ``impulse`` = int F_c dtau, so
   I(tau_d) = 1 + e with e = -delta'(tau_d);
-- ``int_F2`` = int F_c^2 dtau over the contact and ``xi`` = 1 - e^2 (part of it is the elastic
-  energy (2/5) delta^{5/2} left in the grains at separation, which the grains' bulk dissipates
-  later: this reading has no 2 lambda int F^2 identity);
+- ``int_F2`` = int F_c^2 dtau over the contact and ``xi`` = 1 - e^2. This reading has no
+  2 lambda int F^2 identity; its energy balance (``derivation/viscoelastic.py``) is
+
+      xi = 1 - e^2 = 3 lambda int_0^tau_d sqrt(delta) delta'^2 dtau + (4/5) delta(tau_d)^{5/2},
+
+  the dashpot's dissipation plus the elastic energy left in the grains at separation (which their
+  bulk dissipates later). Both terms are positive, so xi is formed from them without the
+  cancellation of 1 - e^2 when e -> 1 (small lambda): exactly 0 at lambda = 0, never negative;
 - past tau_d the history has delta = 0, force 0 and the separation velocity.
 
 Two independent paths, as for the plate:
@@ -23,12 +28,14 @@ Two independent paths, as for the plate:
 :func:`solve` (scipy)
     the three phases of :mod:`.solver` (u = sqrt(delta) at both ends, tau in the middle) with the
     force-free end as a terminal event (phase 2 or 3), the peak of F_c as an event (phase 1 or 2),
-    and int F_c^2 as the third state. The solver module itself is untouched.
+    int F_c^2 as the third state and the dissipation int sqrt(delta) delta'^2 as the fourth (for
+    xi). The solver module itself is untouched.
 :func:`solve_mp` (mpmath)
     the plate's Taylor solution of :mod:`.mp`, cut at the force-free end: every step is a
     polynomial, so the end (a root of delta + (3/2) lambda v), the peak (a root of F_c') and
     int F_c^2 (a polynomial integral) come from the stored steps by Newton's method and exact
-    integration.
+    integration; xi = 1 - e^2 is formed at the working precision (30 digits and guard digits by
+    default), so its cancellation near e = 1 costs nothing a float reference could see.
 """
 from __future__ import annotations
 
@@ -40,7 +47,7 @@ from scipy.integrate import solve_ivp
 
 from .. import params
 from . import mp as _mp
-from .solver import LAMBDA_MAX, ExactSolution
+from .solver import LAMBDA_MAX, ExactSolution, _Budget, check_options, end_velocity
 from .solver import solve as _solve_plate
 
 __all__ = ["CONTACT_ENDS", "check_contact_end", "ForceEndSolution", "solve", "solve_mp"]
@@ -64,8 +71,9 @@ def check_contact_end(contact_end) -> str:
 class ForceEndSolution:
     """Solution of Eq. (10) ended at the force-free point (grain reading, module docstring).
 
-    ``v_end`` is delta'(tau_d) (the separation velocity is -v_end = e). ``_base`` is the plate-style
-    solution object cut at tau_d, used for the dense history of delta and w = 1 - int delta^{3/2}.
+    ``v_end`` is delta'(tau_d) (the separation velocity is -v_end = e); ``xi`` = 1 - e^2 formed
+    without cancellation (module docstring). ``_base`` is the plate-style solution object cut at
+    tau_d, used for the dense history of delta and w = 1 - int delta^{3/2}.
     """
 
     lam: float
@@ -75,6 +83,7 @@ class ForceEndSolution:
     v_end: float
     int_F2: float
     F_m: float
+    xi: float
     _base: object = None
 
     @property
@@ -84,10 +93,6 @@ class ForceEndSolution:
     @property
     def impulse(self):
         return 1 - self.v_end
-
-    @property
-    def xi(self):
-        return 1 - self.v_end**2
 
     @property
     def tau_dr(self):
@@ -113,44 +118,75 @@ class ForceEndSolution:
 
 # --- scipy path ------------------------------------------------------------------------------
 
-def _rhs_u(lam):
-    """u-form with J = int F_c^2: dtau/du = 2u/v, dw/du = -2u^4/v, dJ/du = 2u F_c^2/v."""
+def _rhs_u(lam, budget):
+    """u-form with J = int F_c^2 and D = int sqrt(delta) delta'^2: dtau/du = 2u/v,
+    dw/du = -2u^4/v, dJ/du = 2u F_c^2/v, dD/du = 2u^2 v."""
 
     def f(u, y):
+        budget.spend()
         v = y[1] - lam * u**3
         if abs(v) < 1e-300:
             v = 1e-300 if v >= 0 else -1e-300
         g = 2.0 * u / v
         fc = u**3 + 1.5 * lam * u * v
-        return np.array([g, -g * u**3, g * fc * fc])
+        return np.array([g, -g * u**3, g * fc * fc, 2.0 * u * u * v])
 
     return f
 
 
-def _rhs_tau(lam):
+def _rhs_tau(lam, budget):
+    """Middle phase in tau, state (delta, v, g, w, J, D): v = delta' and g = delta + (3/2) lam v
+    (F_c = sqrt(delta) g) carried as their own states,
+
+        v' = -sqrt(delta) (delta + (3/2) lam v)   (Eq. 10),   g' = v - (3/2) lam sqrt(delta) g.
+
+    At large lambda the end of compression (v = 0) and the force-free end (g = 0, a short time
+    later, where v is small) would otherwise be found on w - lam delta^{3/2} or on delta + (3/2)
+    lam v, differences of nearly equal numbers: tau_dc was off by 1.7e-9 relative at lambda =
+    1000 and tau_d by 7e-6 (w form) or 1.4e-10 at lambda = 300 (v form), since g crosses 0 with
+    slope v = -delta / ((3/2) lam). Each event reads the state that vanishes there, which is
+    relatively accurate near its zero (no absolute tolerance), and g's own equation damps errors
+    fed in from v (rate (3/2) lam sqrt(delta))."""
+    k = 1.5 * lam
+
     def f(t, y):
+        budget.spend()
         d = y[0] if y[0] > 0.0 else 0.0
         s = np.sqrt(d)
-        v = y[1] - lam * d * s
-        fc = s * (d + 1.5 * lam * v)
-        return np.array([v, -d * s, fc * fc])
+        v, g = y[1], y[2]
+        fc = s * (d + k * v)
+        return np.array([v, -fc, v - k * s * g, -d * s, fc * fc, s * v * v])
 
     return f
+
+
+class _Rows:
+    """Dense output restricted to the rows (delta, w) that the plate's history reads."""
+
+    def __init__(self, sol):
+        self.sol = sol
+
+    def __call__(self, t):
+        return self.sol(t)[[0, 3]]
 
 
 def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "DOP853") -> ForceEndSolution:
     """Integrate Eq. (10) for one lambda (0 <= lam <= LAMBDA_MAX, validated by the caller) to the
-    force-free end. Options as in :func:`zener_sym.exact.solver.solve`; the default tolerance is ten
-    times tighter than the plate's because the force-free end follows the end of compression
-    closely at large lambda, where delta + (3/2) lambda delta' crosses 0 with a small slope (measured
-    against :func:`solve_mp`: summary within 4e-12 relative for lambda <= 5 with these defaults,
-    against 3e-10 with the plate's 1e-12)."""
+    force-free end.
+
+    Options as in :func:`zener_sym.exact.solver.solve` (checked here before any work, with the
+    same evaluation budget, so no option makes a call hang); the default tolerance is ten times
+    tighter than the plate's. Measured against :func:`solve_mp` (``tests/test_viscoelastic.py``):
+    every summary field within 5e-14 relative for 0 <= lambda <= 1000 with these defaults.
+    """
+    rtol, atol, method = check_options(rtol, atol, method)
     lam = float(lam)
     if lam == 0.0:  # F_c = delta^{3/2}: the force-free end is delta = 0
         s = _solve_plate(0.0, rtol=rtol, atol=atol, method=method)
         return ForceEndSolution(lam=0.0, delta_m=s.delta_m, tau_dc=s.tau_dc, tau_d=s.tau_d,
-                                v_end=s.w_end, int_F2=s.int_F2, F_m=s.F_m, _base=s)
-    atols = np.array([atol, 1e-300, atol])
+                                v_end=s.w_end, int_F2=s.int_F2, F_m=s.F_m, xi=0.0, _base=s)
+    budget = _Budget(lam, method, rtol)
+    atols = np.array([atol, 1e-300, atol, atol])
     k = 1.5 * lam
     u_cap = min(1.2, lam ** (-1.0 / 3.0))
 
@@ -165,12 +201,12 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
         return 3.0 * u**2 + k * (v + u * dv)
 
     peak_u.direction = -1
-    s1 = solve_ivp(_rhs_u(lam), (0.0, u_cap), [0.0, 1.0, 0.0], method=method, rtol=rtol, atol=atols,
+    s1 = solve_ivp(_rhs_u(lam, budget), (0.0, u_cap), [0.0, 1.0, 0.0, 0.0], method=method, rtol=rtol, atol=atols,
                    events=[v_half, peak_u], dense_output=True)
     if s1.status != 1:
         raise RuntimeError(f"exact (force end): loading phase did not reach v = 1/2 at lambda = {lam}")
     u1 = float(s1.t_events[0][0])
-    tau1, w1, J1 = s1.y_events[0][0]
+    tau1, w1, J1, D1 = s1.y_events[0][0]
     F_m = None
     if len(s1.t_events[1]):
         up = float(s1.t_events[1][0])
@@ -178,34 +214,35 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
         F_m = up**3 + k * up * vp
 
     def v_zero(t, y):
-        d = max(y[0], 0.0)
-        return y[1] - lam * d * np.sqrt(d)
+        return y[1]
 
     v_zero.direction = -1
 
     def peak_t(t, y):  # proportional to dF_c/dtau: 2 delta v + lam v^2 - 2 lam delta F_c
         d = max(y[0], 0.0)
-        s = np.sqrt(d)
-        v = y[1] - lam * d * s
-        return 2.0 * d * v + lam * v * v - 2.0 * lam * d * s * (d + k * v)
+        v = y[1]
+        return 2.0 * d * v + lam * v * v - 2.0 * lam * d * np.sqrt(d) * y[2]
 
     peak_t.direction = -1
 
     def hand_over(t, y):
         d = max(y[0], 0.0)
-        v = y[1] - lam * d * np.sqrt(d)
-        return v * v - 2.0 * d * d * np.sqrt(d)
+        return y[1] * y[1] - 2.0 * d * d * np.sqrt(d)
 
     hand_over.terminal, hand_over.direction = True, 1
 
-    def free_t(t, y):  # force-free: delta + (3/2) lam v
-        d = max(y[0], 0.0)
-        return d + k * (y[1] - lam * d * np.sqrt(d))
+    def free_t(t, y):  # force-free: g = delta + (3/2) lam v = 0
+        return y[2]
 
     free_t.terminal, free_t.direction = True, -1
     t_cap = tau1 + 100.0 + 100.0 * lam
-    s2 = solve_ivp(_rhs_tau(lam), (tau1, t_cap), [u1 * u1, w1, J1], method=method, rtol=rtol,
-                   atol=atols, events=[v_zero, peak_t, hand_over, free_t], dense_output=True)
+    v1 = w1 - lam * u1**3
+    # v and g get no absolute tolerance: relative control down to their zeros (as the plate's
+    # phase 2a)
+    atols6 = np.array([atol, 1e-300, 1e-300, 1e-300, atol, atol])
+    y1 = [u1 * u1, v1, u1 * u1 + k * v1, w1, J1, D1]
+    s2 = solve_ivp(_rhs_tau(lam, budget), (tau1, t_cap), y1, method=method, rtol=rtol, atol=atols6, events=[v_zero, peak_t, hand_over, free_t],
+                   dense_output=True)
     if s2.status != 1 or len(s2.t_events[0]) != 1:
         raise RuntimeError(f"exact (force end): middle phase failed at lambda = {lam}: {s2.message}")
     tau_dc = float(s2.t_events[0][0])
@@ -213,37 +250,39 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
     if F_m is None:
         if not len(s2.t_events[1]):
             raise RuntimeError(f"exact (force end): no peak of the force found at lambda = {lam}")
-        d, w = s2.y_events[1][0][:2]
-        v = w - lam * d**1.5
-        F_m = float(np.sqrt(d) * (d + k * v))
+        d, _, g = s2.y_events[1][0][:3]
+        F_m = float(np.sqrt(d) * g)
     s3 = None
     if len(s2.t_events[3]):  # the force vanished in the middle phase (large lambda)
         tau_d = float(s2.t_events[3][0])
-        d, w, J = s2.y_events[3][0]
-        v_end = w - lam * d**1.5
+        d, v_end, _, w, J, D = s2.y_events[3][0]
+        d_end = d
         tau2 = tau_d
     else:
         tau2 = float(s2.t_events[2][0])
-        d2, w2, J2 = s2.y_events[2][0]
+        d2, _, _, w2, J2, D2 = s2.y_events[2][0]
 
         def free_u(u, y):
             return u * u + k * (y[1] - lam * u**3)
 
         free_u.terminal, free_u.direction = True, -1
-        s3 = solve_ivp(_rhs_u(lam), (np.sqrt(d2), 0.0), [tau2, w2, J2], method=method, rtol=rtol,
+        s3 = solve_ivp(_rhs_u(lam, budget), (np.sqrt(d2), 0.0), [tau2, w2, J2, D2], method=method, rtol=rtol,
                        atol=atols, events=free_u, dense_output=True)
         if s3.status != 1:
             raise RuntimeError(f"exact (force end): no force-free point before delta = 0 at lambda = {lam}")
         ue = float(s3.t_events[0][0])
-        tau_d, w, J = s3.y_events[0][0]
+        tau_d, w, J, D = s3.y_events[0][0]
         v_end = w - lam * ue**3
+        d_end = ue * ue
     base = ExactSolution(
         lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=float(tau_d), w_end=float(w), int_F2=float(J),
-        _load=s1.sol, _mid=s2.sol, _unload=s3.sol if s3 is not None else None, _tau1=float(tau1),
+        _load=s1.sol, _mid=_Rows(s2.sol), _unload=s3.sol if s3 is not None else None, _tau1=float(tau1),
         _tau2=float(tau2), _u_grid1=s1.t, _tau_grid1=s1.y[0],
         _u_grid3=s3.t if s3 is not None else None, _tau_grid3=s3.y[0] if s3 is not None else None)
+    xi = float(3.0 * lam * D + 0.8 * max(d_end, 0.0) ** 2.5)
     return ForceEndSolution(lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=float(tau_d),
-                            v_end=float(v_end), int_F2=float(J), F_m=float(F_m), _base=base)
+                            v_end=end_velocity(xi, float(v_end)), int_F2=float(J), F_m=float(F_m),
+                            xi=xi, _base=base)
 
 
 # --- mpmath path -----------------------------------------------------------------------------
@@ -308,7 +347,8 @@ def solve_mp(lam, dps: int = 30) -> ForceEndSolution:
         k = mpmath.mpf(3) / 2 * L
         if L == 0:
             return ForceEndSolution(lam=L, delta_m=sol.delta_m, tau_dc=sol.tau_dc, tau_d=sol.tau_d,
-                                    v_end=sol.v_end, int_F2=sol.int_F2, F_m=sol.F_m, _base=sol)
+                                    v_end=sol.v_end, int_F2=sol.int_F2, F_m=sol.F_m,
+                                    xi=mpmath.mpf(0), _base=sol)
         F_m = None
         J = mpmath.mpf(0)
         for ph in sol._phases:
@@ -336,6 +376,7 @@ def solve_mp(lam, dps: int = 30) -> ForceEndSolution:
                     v_end = _mp._horner(st.c[1], s)
                     tau_d = t0 + s if ph.kind == "tau" else _mp._horner(st.c[0], s)
                     return ForceEndSolution(lam=L, delta_m=sol.delta_m, tau_dc=sol.tau_dc, tau_d=tau_d,
-                                            v_end=v_end, int_F2=J, F_m=F_m, _base=sol)
+                                            v_end=v_end, int_F2=J, F_m=F_m, xi=1 - v_end**2,
+                                            _base=sol)
                 J += _integral(_mul(_mul(fc, fc), dtau), st.h)
     raise RuntimeError(f"exact (force end, mpmath): no force-free point found at lambda = {lam}")

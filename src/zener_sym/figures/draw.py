@@ -77,9 +77,14 @@ def draw(spec: FigureSpec, rows, plt):
         if spec.ylog:
             from matplotlib.ticker import FormatStrFormatter
 
+            from matplotlib.ticker import NullFormatter
+
             ax.set_yscale("log")
             ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-            ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
+            lo, hi = ax.get_ylim()
+            # label the minor ticks only when the axis has too few decades to show a major one
+            # (over several decades they would overprint each other)
+            ax.yaxis.set_minor_formatter(FormatStrFormatter("%g") if hi / lo < 20 else NullFormatter())
         ylab = st.label(spec.y)
         if spec.number == 8:
             ylab = st.label("tau_dc" if panel == "compression" else "tau_dr")

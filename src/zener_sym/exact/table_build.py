@@ -67,6 +67,10 @@ HISTORY_TO = 1000.0
 #: lambda of the one long solve that gives the universal orbit (above LAM_PIECES[-1]: every
 #: node's W_M = lambda^5 w_M must lie on the part of the orbit past its own transient).
 LAM_U = 1050.0
+#: Tolerance of that one solve: tighter than RTOL, because every large-lambda history reads
+#: the orbit off it far into its integration, where its error has accumulated (at RTOL 1e-13
+#: delta was 1e-10 off relative at lambda = 107, early in piece M).
+U_RTOL = 3e-14
 #: e-foldings of the loading transient a large-lambda node integrates past tau_dc before matching.
 MATCH_DECAYS = 40.0
 #: Chebyshev points per lambda piece.
@@ -255,7 +259,7 @@ def universal_orbit():
     """The universal orbit as the solution at LAM_U, its rest time and C = e lambda^5."""
     from . import solver as exact
 
-    U = exact.solve(LAM_U, rtol=RTOL)
+    U = exact.solve(LAM_U, rtol=U_RTOL)
     return U, _rest_time(U), -U.w_end * LAM_U**5
 
 

@@ -31,7 +31,7 @@ __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATO
 
 LAM_MIN = float(_build.LAM_PIECES[0])
 LAM_MAX = float(_build.LAM_PIECES[-1])
-#: The history tables end here (the summary goes on to LAM_MAX).
+#: The history tables end here (as the summary tables: LAM_MAX).
 HISTORY_LAM_MAX = float(_build.HISTORY_TO)
 #: Documented (and tested) relative error bound of every summary field.
 SUMMARY_RTOL = 1e-11

@@ -66,10 +66,12 @@ class _Sine(Model):
         on = tau < td
         x = self.Omega * np.minimum(tau, td)
         out = {}
-        if "delta" in want:
-            out["delta"] = np.where(on, fm.DELTA_M_HERTZ * np.sin(x), 0.0)
-        if "force" in want:
-            out["force"] = np.where(on, self._force(x), 0.0)
+        if want & {"delta", "force"}:
+            # one sine for both; exactly 0 from tau_d on (sin(pi) would leave 1.2e-16)
+            s = np.sin(x)
+            s[~on] = 0.0
+            out["delta"] = fm.DELTA_M_HERTZ * s
+            out["force"] = self._force(s)
         if want & {"impulse", "velocity"}:
             imp = np.where(on, self._impulse(x), self._impulse_total())
             out["impulse"], out["velocity"] = imp, 1.0 - imp
@@ -83,8 +85,8 @@ class Hunter(_Sine):
     name = "hunter"
     description = "Hunter's sinusoidal force pulse, Eq. (52) (lambda ignored)"
 
-    def _force(self, x):
-        return fm.A_HUNTER * np.sin(x)  # Eq. (52) at the phase x = Omega tau in [0, pi]
+    def _force(self, s):
+        return fm.A_HUNTER * s  # Eq. (52), s = sin(Omega tau) on [0, pi]
 
     def _impulse(self, x):
         return fm.A_HUNTER / self.Omega * (1.0 - np.cos(x))
@@ -101,16 +103,17 @@ class Reed(_Sine):
     name = "reed"
     description = "Reed's sin^(3/2) force pulse, Eq. (53) (lambda ignored)"
 
-    def _force(self, x):
-        s = np.sin(x)
-        return fm.A_REED * s * np.sqrt(s)  # Eq. (53) at the phase x = Omega tau in [0, pi]
+    def _force(self, s):
+        return fm.A_REED * s * np.sqrt(s)  # Eq. (53), s = sin(Omega tau) on [0, pi]
 
     def _impulse(self, x):
         # int_0^x sin^{3/2} = K_s(0, x): the closed form is an incomplete beta function
         # (formulas.int_sin32, which the tests compare), but scipy's betainc costs about 1 us a
         # point; the Chebyshev series of K_s (ham.quadrature.impulse_s) agree to 1e-14 at a
         # tenth of that
-        return fm.A_REED / self.Omega * impulse_s(np.zeros_like(x), x)
+        # one rate (0) for every point, as a broadcast column: no sort of the points by rate
+        rate = np.broadcast_to(np.zeros(x.shape[:-1] + (1,) if x.ndim else ()), x.shape)
+        return fm.A_REED / self.Omega * impulse_s(rate, x)
 
     def _summary(self, lam, **options):
         out = self._common(lam)

@@ -68,3 +68,24 @@ def test_broadcasting_and_blocks():
 def test_bad_input(a, th):
     with pytest.raises(ValueError, match="must be finite and >= 0"):
         sqrt_integrals(a, th)
+
+
+def test_impulse_series_against_the_rule_on_lines_and_scattered():
+    """K_s from the piecewise series (one rate per line, or scattered rates, some past the
+    series' A_SERIES) against the Gauss-Jacobi rule, and bad input refused on either path."""
+    from zener_sym.ham.quadrature import A_SERIES, impulse_s, sqrt_integrals
+
+    rates = np.array([0.0, 0.37, 2.9, 8.5, A_SERIES, 1.3 * A_SERIES])
+    theta = np.linspace(0.0, 3.5, 157)  # past pi: K_s stays at K_s(a, pi)
+    ref = sqrt_integrals(np.repeat(rates, theta.size), np.tile(np.minimum(theta, np.pi),
+                                                               rates.size), ("s",))["s"]
+    ref = ref.reshape(rates.size, theta.size)
+    lines = impulse_s(np.broadcast_to(rates[:, None], ref.shape), np.broadcast_to(theta, ref.shape))
+    scattered = impulse_s(np.repeat(rates, theta.size), np.tile(theta, rates.size))
+    assert np.max(np.abs(lines - ref)) < 2e-14  # K_s is up to 1.1 here
+    assert np.max(np.abs(scattered.reshape(ref.shape) - ref)) < 2e-14
+    col = np.broadcast_to(np.array([[0.5], [np.nan]]), (2, 4))
+    for a, th in ((col, np.ones((2, 4))), (-1.0, 1.0), (1.0, np.nan), (1.0, -0.1),
+                  (1.0, np.inf)):
+        with pytest.raises(ValueError, match="impulse_s"):
+            impulse_s(a, th)

@@ -109,6 +109,17 @@ def _inputs(tau, lam):
     return numpy.broadcast_arrays(tau, lam)
 
 
+def _inputs_narrow(tau, lam):
+    """As _inputs, but lambda keeps its own shape (its parameters are then computed once per
+    lambda, not once per point); tau takes the common shape, so every term that has tau in it
+    does too."""
+    lam = _lam(lam)
+    tau = numpy.asarray(tau, dtype=float)
+    if not numpy.all(numpy.isfinite(tau)) or numpy.any(tau < 0):
+        raise ValueError("tau must be finite and >= 0")
+    return numpy.broadcast_to(tau, numpy.broadcast_shapes(tau.shape, lam.shape)), lam
+
+
 def params(lam):
     """k (25), beta (32) and omega0 (33) of the zeroth-order operator, as float arrays."""
     lam = _lam(lam)
@@ -118,7 +129,7 @@ def params(lam):
 
 def delta0(tau, lam):
     """Zeroth-order compression delta0 (35), continued analytically (no clipping)."""
-    tau, lam = _inputs(tau, lam)
+    tau, lam = _inputs_narrow(tau, lam)
     k, beta, omega0 = params(lam)
 {delta0_block}
     return out
@@ -126,7 +137,7 @@ def delta0(tau, lam):
 
 def delta0_dot(tau, lam):
     """Zeroth-order relative velocity delta0' (56), continued analytically."""
-    tau, lam = _inputs(tau, lam)
+    tau, lam = _inputs_narrow(tau, lam)
     k, beta, omega0 = params(lam)
 {delta0_dot_block}
     return out

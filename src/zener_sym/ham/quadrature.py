@@ -210,25 +210,28 @@ def _trimmed(c, tol=1e-14):
 def impulse_s(a, theta):
     """K_s(a, theta) = int_0^min(theta, pi) exp(-a t) sin^{3/2} t dt, fast for many theta per a.
 
-    Same value as ``sqrt_integrals(a, theta, ("s",))["s"]`` to about 1e-15 (tests), from the
+    Same value as ``sqrt_integrals(a, theta, ("s",))["s"]`` to about 1e-14 (tests), from the
     Chebyshev series for a <= A_SERIES and the quadrature for larger a.
     """
     a, theta = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(theta, dtype=float))
-    if not (np.all(np.isfinite(a)) and np.all(a >= 0)):
+    # a broadcast column (one rate per line of theta, stride 0 along it): its lines are checked
+    # and sorted, not every point
+    column = a.ndim >= 1 and a.shape[-1] > 1 and a.strides[-1] == 0
+    rates = a[..., :1] if column else a
+    if not (np.all(np.isfinite(rates)) and np.all(rates >= 0)):
         raise ValueError("impulse_s: the decay rate a must be finite and >= 0")
-    if not (np.all(np.isfinite(theta)) and np.all(theta >= 0)):
+    lo, hi = (theta.min(), theta.max()) if theta.size else (0.0, 0.0)
+    if not (lo >= 0 and hi < np.inf):  # a NaN fails both
         raise ValueError("impulse_s: theta must be finite and >= 0")
+    if column and np.all(rates <= A_SERIES):
+        u, inv = np.unique(rates[..., 0], return_inverse=True)
+        inv = np.repeat(inv.ravel(), a.shape[-1])
+        th = np.minimum(theta, np.pi).ravel()
+        return _series_eval(u, inv, th).reshape(a.shape)
     out = np.empty(a.shape)
     fast = a <= A_SERIES
     if (~fast).any():
         out[~fast] = sqrt_integrals(a[~fast], theta[~fast], ("s",))["s"]
-    if fast.all() and a.ndim >= 1 and a.shape[-1] > 1 and np.array_equal(
-            a, np.broadcast_to(a[..., :1], a.shape)):
-        # one rate per line of theta (a broadcast column): sort the lines, not every point
-        u, inv = np.unique(a[..., 0], return_inverse=True)
-        inv = np.broadcast_to(inv.reshape(a.shape[:-1] + (1,)), a.shape).ravel()
-        th = np.minimum(theta, np.pi).ravel()
-        return _series_eval(u, inv, th).reshape(a.shape)
     if fast.any():
         af, th = a[fast], np.minimum(theta[fast], np.pi)
         u, inv = np.unique(af, return_inverse=True)

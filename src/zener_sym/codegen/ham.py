@@ -101,23 +101,20 @@ def _lam(lam):
     return lam
 
 
-def _inputs(tau, lam):
-    lam = _lam(lam)
-    tau = numpy.asarray(tau, dtype=float)
-    if not numpy.all(numpy.isfinite(tau)) or numpy.any(tau < 0):
-        raise ValueError("tau must be finite and >= 0")
-    return numpy.broadcast_arrays(tau, lam)
-
-
 def _inputs_narrow(tau, lam):
-    """As _inputs, but lambda keeps its own shape (its parameters are then computed once per
-    lambda, not once per point); tau takes the common shape, so every term that has tau in it
-    does too."""
+    """Validated tau and lambda; lambda keeps its own shape (its parameters are then computed
+    once per lambda, not once per point) and tau takes the common shape, so every term that has
+    tau in it does too."""
     lam = _lam(lam)
     tau = numpy.asarray(tau, dtype=float)
     if not numpy.all(numpy.isfinite(tau)) or numpy.any(tau < 0):
         raise ValueError("tau must be finite and >= 0")
     return numpy.broadcast_to(tau, numpy.broadcast_shapes(tau.shape, lam.shape)), lam
+
+
+def _inputs(tau, lam):
+    """Validated tau and lambda, both of the common shape."""
+    return numpy.broadcast_arrays(*_inputs_narrow(tau, lam))
 
 
 def params(lam):

@@ -47,7 +47,7 @@ from scipy.integrate import solve_ivp
 
 from .. import params
 from . import mp as _mp
-from .solver import LAMBDA_MAX, ExactSolution, _Budget, check_options, end_velocity
+from .solver import LAMBDA_MAX, ContactTimes, ExactSolution, _Budget, check_options, end_velocity
 from .solver import solve as _solve_plate
 
 __all__ = ["CONTACT_ENDS", "check_contact_end", "ForceEndSolution", "solve", "solve_mp"]
@@ -68,7 +68,7 @@ def check_contact_end(contact_end) -> str:
 
 
 @dataclass
-class ForceEndSolution:
+class ForceEndSolution(ContactTimes):
     """Solution of Eq. (10) ended at the force-free point (grain reading, module docstring).
 
     ``v_end`` is delta'(tau_d) (the separation velocity is -v_end = e); ``xi`` = 1 - e^2 formed
@@ -93,14 +93,6 @@ class ForceEndSolution:
     @property
     def impulse(self):
         return 1 - self.v_end
-
-    @property
-    def tau_dr(self):
-        return self.tau_d - self.tau_dc
-
-    @property
-    def eta(self):
-        return self.tau_dr / self.tau_dc
 
     def history(self, tau) -> dict:
         """delta, velocity delta', force F_c and impulse 1 - delta' at ``tau`` (>= 0), float arrays."""

@@ -44,7 +44,7 @@ import mpmath
 import numpy as np
 
 from .. import params
-from .solver import LAMBDA_MAX
+from .solver import LAMBDA_MAX, ContactTimes
 
 __all__ = ["MpSolution", "solve", "check_dps", "DPS_MIN", "DPS_MAX"]
 
@@ -190,7 +190,7 @@ def _jets_tau(y0, lam, N):
 
 
 @dataclass
-class MpSolution:
+class MpSolution(ContactTimes):
     """High-precision solution of Eq. (10) for one lambda (all summary fields are ``mpf``).
 
     ``v_end`` = δ'(τ_d) and ``w_end`` = 1 − Ī(τ_d) are separate states; at the end of contact
@@ -207,14 +207,6 @@ class MpSolution:
     int_F2: object
     n_steps: tuple
     _phases: list = field(repr=False)  # the Taylor steps (dense output), too long to print
-
-    @property
-    def tau_dr(self):
-        return self.tau_d - self.tau_dc
-
-    @property
-    def eta(self):
-        return self.tau_dr / self.tau_dc
 
     @property
     def e(self):

@@ -147,8 +147,22 @@ class _TwoPieces:
         return out
 
 
+class ContactTimes:
+    """tau_dr and eta from tau_d and tau_dc, shared by every solution object (floats or mpf)."""
+
+    @property
+    def tau_dr(self):
+        """Recovery time tau_d - tau_dc."""
+        return self.tau_d - self.tau_dc
+
+    @property
+    def eta(self):
+        """Ratio of recovery to compression time, tau_dr / tau_dc."""
+        return self.tau_dr / self.tau_dc
+
+
 @dataclass
-class ExactSolution:
+class ExactSolution(ContactTimes):
     """Solution of Eq. (10) for one lambda, with summary fields and a dense history.
 
     ``w_end`` is the relative velocity 1 − Ī at the end of contact, kept as its own state so that
@@ -174,14 +188,6 @@ class ExactSolution:
     @property
     def impulse(self) -> float:
         return 1.0 - self.w_end
-
-    @property
-    def tau_dr(self) -> float:
-        return self.tau_d - self.tau_dc
-
-    @property
-    def eta(self) -> float:
-        return self.tau_dr / self.tau_dc
 
     @property
     def e(self) -> float:

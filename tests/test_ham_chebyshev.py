@@ -65,3 +65,12 @@ def test_clenshaw_take_against_chebval_for_scattered_and_broadcast_rows():
     perm = rng.permutation(x.size)
     flat = hn.clenshaw_take(cT, np.array(column).ravel()[perm], x.ravel()[perm])
     np.testing.assert_allclose(flat, ref.ravel()[perm], rtol=1e-13, atol=1e-13)
+
+
+def test_horner_take_against_polyval_with_rows_by_index():
+    rng = np.random.default_rng(3)
+    rows = rng.normal(size=(9, 5))  # [power, row]
+    idx = rng.integers(0, 5, 200)
+    x = rng.uniform(-1, 1, 200)
+    ref = np.array([np.polynomial.polynomial.polyval(xi, rows[:, r]) for xi, r in zip(x, idx)])
+    np.testing.assert_allclose(hn.horner_take(rows, idx, x), ref, rtol=1e-13, atol=1e-14)

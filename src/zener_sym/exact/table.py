@@ -24,6 +24,7 @@ import importlib
 
 import numpy as np
 
+from ..ham.chebyshev import horner_take
 from . import table_build as _build
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
@@ -226,20 +227,8 @@ def _piece_coefficients(per, ip, tl_all, n_rows, n_sub):
 
 def _horner_rows(cT, rows, x, deg, need):
     """f and I at the points: cT[j, r] is the coefficient of x^j of f on row r, cT[deg + j, r]
-    that of I (zero beyond ``need``). Horner's rule from degree need - 1, each step gathering
-    the points' coefficients by row into one buffer and adding them in place (contiguous
-    passes; gathering each point's whole row once and reading it by columns was slower).
-    The rows are in range by construction, so the gathers skip numpy's bounds check
-    (mode="clip", about 25% faster here)."""
-    f = cT[need - 1].take(rows, mode="clip")
-    i = cT[deg + need - 1].take(rows, mode="clip")
-    tmp = np.empty_like(f)
-    for j in range(need - 2, -1, -1):
-        f *= x
-        f += cT[j].take(rows, out=tmp, mode="clip")
-        i *= x
-        i += cT[deg + j].take(rows, out=tmp, mode="clip")
-    return f, i
+    that of I (zero beyond ``need``). Rows are in range by construction."""
+    return horner_take(cT[:need], rows, x), horner_take(cT[deg:deg + need], rows, x)
 
 
 def _scaled_maps(name, k, lu, log, v, tau_s):

@@ -37,7 +37,7 @@ import functools
 import numpy as np
 from scipy.special import roots_jacobi
 
-from .chebyshev import clenshaw_take
+from .chebyshev import horner_take
 
 __all__ = ["K_FUNCS", "sqrt_integrals", "N_NODES", "CUT"]
 
@@ -144,12 +144,13 @@ def _flat(a, th, names):
 # Many phases per decay rate: K_s(a, theta) = int_0^theta exp(-a t) sin^{3/2} t dt as series.
 #
 # A history asks for K_s at hundreds of phases theta for each of a few decay rates a (one per
-# lambda). We store, once per process, Chebyshev series in (theta, a) of
+# lambda). We store, once per process, Chebyshev series in (theta, a), piecewise in theta, of
 #   K_s(a, theta)              = theta^{5/2} G(a, theta)               on [0, pi/2],
 #   K_s(a, pi) - K_s(a, theta) = r^{5/2} H(a, r),  r = pi - theta,      on [0, pi/2],
 # from the quadrature above at Chebyshev points. G and H are analytic (sin^{3/2} t =
 # t^{3/2} (sin t / t)^{3/2}, exp entire), so both series converge geometrically. Per distinct a
-# the a-direction is contracted once; each phase then costs one Clenshaw sum in theta.
+# the a-direction is contracted once and each piece's theta series is turned into monomials;
+# each phase then costs one short polynomial by Horner's rule (ham.chebyshev.horner_take).
 # exp(-a t) makes G steep for large a: the series serve a <= A_SERIES, the rule the rest.
 
 #: Pieces per half of [0, pi] (in theta on the left, in r on the right), Chebyshev points in
@@ -248,17 +249,6 @@ def _cheb_to_monomial(n):
     return m
 
 
-def _horner_take(rows, idx, x):
-    """sum_j rows[j, idx] x^j pointwise by Horner's rule, each step gathering the points'
-    coefficients into one buffer (idx is in range by construction: no bounds check)."""
-    f = rows[-1].take(idx, mode="clip")
-    tmp = np.empty_like(f)
-    for j in range(rows.shape[0] - 2, -1, -1):
-        f *= x
-        f += rows[j].take(idx, out=tmp, mode="clip")
-    return f
-
-
 def _series_eval(u, inv, th):
     """K_s at phases th (in [0, pi]) for the rates u[inv] (all <= A_SERIES), from the series."""
     cG, cH = _ks_table()
@@ -296,6 +286,6 @@ def _series_eval(u, inv, th):
         val = np.sqrt(y)
         val *= y
         val *= y
-        val *= _horner_take(rows, row, x)
+        val *= horner_take(rows, row, x)
         out[s:s + _BLOCK] = np.where(left, val, k_pi[iv] - val)
     return out

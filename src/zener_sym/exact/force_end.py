@@ -47,7 +47,8 @@ from scipy.integrate import solve_ivp
 
 from .. import params
 from . import mp as _mp
-from .solver import LAMBDA_MAX, ContactTimes, ExactSolution, _Budget, check_options, end_velocity
+from .solver import (LAMBDA_MAX, ContactTimes, ExactSolution, _Budget, check_options,
+                     restitution)
 from .solver import solve as _solve_plate
 
 __all__ = ["CONTACT_ENDS", "check_contact_end", "ForceEndSolution", "solve", "solve_mp"]
@@ -273,8 +274,8 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
         _u_grid3=s3.t if s3 is not None else None, _tau_grid3=s3.y[0] if s3 is not None else None)
     xi = float(3.0 * lam * D + 0.8 * max(d_end, 0.0) ** 2.5)
     return ForceEndSolution(lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=float(tau_d),
-                            v_end=end_velocity(xi, float(v_end)), int_F2=float(J), F_m=float(F_m),
-                            xi=xi, _base=base)
+                            v_end=-float(restitution(xi, -float(v_end))), int_F2=float(J),
+                            F_m=float(F_m), xi=xi, _base=base)
 
 
 # --- mpmath path -----------------------------------------------------------------------------

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-__all__ = ["ExactSolution", "solve", "end_velocity", "solve_early", "check_options", "eval_budget", "LAMBDA_MAX", "METHODS",
+__all__ = ["ExactSolution", "solve", "restitution", "solve_early", "check_options", "eval_budget", "LAMBDA_MAX", "METHODS",
            "RTOL_MIN", "RTOL_MAX"]
 
 #: Largest lambda the exact model accepts (tau_d is about 2300 at lambda = 100 and 34000 at
@@ -321,22 +321,23 @@ def solve(lam: float, rtol: float = 1e-12, atol: float = 1e-15, method: str = "D
     tau_d, w_end, J_end = s3.y[:, -1]
     return ExactSolution(
         lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=float(tau_d),
-        w_end=end_velocity(2.0 * lam * float(J_end), float(w_end)),
+        w_end=-float(restitution(2.0 * lam * float(J_end), -float(w_end))),
         int_F2=float(J_end), _load=s1.sol, _mid=mid, _unload=s3.sol, _tau1=float(tau1),
         _tau2=tau2, _u_grid1=s1.t, _tau_grid1=s1.y[0], _u_grid3=s3.t, _tau_grid3=s3.y[0],
     )
 
 
-def end_velocity(xi: float, w_end: float) -> float:
-    """The relative velocity at the end of contact, -e, from the energy loss where that is the
-    better route.
+def restitution(xi, e_direct):
+    """e from the energy loss xi where that is the better route, else ``e_direct``.
 
     While xi < 1/2, e = sqrt(1 - xi) with xi formed without cancellation: as accurate as the
-    integrated w_end, never above 1 and exactly 1 at lambda = 0 (the integrated w_end gave
-    e = 1 + 1.2e-14 there). Above, 1 - xi cancels as e -> 0 and the integrated w_end (relatively
-    accurate, no absolute tolerance) is kept.
+    directly computed e, never above 1 and exactly 1 at lambda = 0 (the integrated end velocity
+    and the tables' exp(log e) gave 1 + 1.2e-14 there). Above, 1 - xi cancels as e -> 0 and
+    ``e_direct`` (relatively accurate) is kept. Scalars or arrays; the scipy solvers, the
+    force-free end and the tables all take e from here.
     """
-    return -float(np.sqrt(1.0 - xi)) if xi < 0.5 else float(w_end)
+    xi = np.asarray(xi, dtype=float)
+    return np.where(xi < 0.5, np.sqrt(np.maximum(1.0 - xi, 0.0)), e_direct)
 
 
 def _loading(lam, rtol, atols, method, budget=None):

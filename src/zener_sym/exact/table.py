@@ -25,6 +25,7 @@ import importlib
 import numpy as np
 
 from ..ham.chebyshev import horner_take
+from . import solver as _solver
 from . import table_build as _build
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
@@ -185,10 +186,7 @@ def _core(lam: np.ndarray, history: bool = False) -> dict:
         vals += tl[:, k:k + 1] * ci[:, :, k]
     v = dict(zip(t["summary_keys"], vals.T))
     v["tau_d"] = np.exp(v["log_tau_d"])
-    # e from the energy loss while xi < 1/2 (as the solver's end_velocity): never above 1 and
-    # exactly 1 at lambda = 0, where exp(log_e) gave 1 + 1.2e-14
-    xi = 2.0 * lam * v["int_F2"]
-    v["e"] = np.where(xi < 0.5, np.sqrt(np.maximum(1.0 - xi, 0.0)), np.exp(v["log_e"]))
+    v["e"] = _solver.restitution(2.0 * lam * v["int_F2"], np.exp(v["log_e"]))
     v["tau_w0"] = v["tau_dc"] + lam * v["rest_over_lam"]
     return v, i, x
 

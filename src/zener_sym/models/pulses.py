@@ -111,9 +111,8 @@ class Reed(_Sine):
         # (formulas.int_sin32, which the tests compare), but scipy's betainc costs about 1 us a
         # point; the Chebyshev series of K_s (ham.quadrature.impulse_s) agree to 1e-14 at a
         # tenth of that
-        # one rate (0) for every point, as a broadcast column: no sort of the points by rate
-        rate = np.broadcast_to(np.zeros(x.shape[:-1] + (1,) if x.ndim else ()), x.shape)
-        return fm.A_REED / self.Omega * impulse_s(rate, x)
+        # one rate (0), broadcast: impulse_s checks and sorts it once, not once per point
+        return fm.A_REED / self.Omega * impulse_s(np.broadcast_to(0.0, x.shape), x)
 
     def _summary(self, lam, **options):
         out = self._common(lam)

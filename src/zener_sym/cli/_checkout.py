@@ -10,7 +10,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-__all__ = ["CheckoutError", "source_root", "ENV"]
+__all__ = ["CheckoutError", "source_root", "check_result", "ENV"]
 
 #: Environment variable naming the checkout explicitly.
 ENV = "ZENER_SYM_SOURCE"
@@ -49,3 +49,15 @@ def source_root(command: str) -> Path:
                         f"repository), but zener_sym runs from {here}, an installed copy. Run it "
                         f"in a clone installed with `pip install -e .`, or set {ENV} to a clone "
                         "of the installed version")
+
+
+def check_result(diffs, stale: str, fresh: str) -> int:
+    """What a ``--check`` prints and returns: the ``stale`` line and each difference, indented
+    (exit 1), or the ``fresh`` line (exit 0)."""
+    if diffs:
+        print(stale)
+        for d in diffs:
+            print("  " + d)
+        return 1
+    print(fresh)
+    return 0

@@ -3,19 +3,15 @@ write the table that :func:`zener_sym.select_model` reads (:mod:`zener_sym.scene
 from __future__ import annotations
 
 from ..scene.envelopes import build, compare, load, save
+from ._checkout import check_result
 
 
 def _run(args) -> int:
     new = build()
     if args.check:
-        diffs = compare(load(), new, decades=args.decades)
-        if diffs:
-            print("envelope table is stale (run 'zener-sym envelopes'):")
-            for d in diffs:
-                print("  " + d)
-            return 1
-        print(f"envelope table up to date ({len(new['models'])} models)")
-        return 0
+        return check_result(compare(load(), new, decades=args.decades),
+                            "envelope table is stale (run 'zener-sym envelopes'):",
+                            f"envelope table up to date ({len(new['models'])} models)")
     where = save(new)
     print(f"wrote {where} ({len(new['models'])} models: {', '.join(new['models'])})")
     return 0

@@ -6,7 +6,7 @@ from __future__ import annotations
 import sys
 
 from ..bench import ham_convergence
-from ._checkout import CheckoutError, source_root
+from ._checkout import CheckoutError, check_result, source_root
 
 
 def _run(args) -> int:
@@ -16,14 +16,10 @@ def _run(args) -> int:
         print(f"zener-sym ham-convergence: error: {exc}", file=sys.stderr)
         return 2
     if args.check:
-        diffs = ham_convergence.check(root=root)
-        if diffs:
-            print("docs/ham_convergence.md or its CSV is stale (run 'zener-sym ham-convergence'):")
-            for d in diffs:
-                print("  " + d)
-            return 1
-        print(f"{root / 'docs' / 'ham_convergence.md'} is up to date")
-        return 0
+        return check_result(
+            ham_convergence.check(root=root),
+            "docs/ham_convergence.md or its CSV is stale (run 'zener-sym ham-convergence'):",
+            f"{root / 'docs' / 'ham_convergence.md'} is up to date")
     for p in ham_convergence.write(root=root, with_chart=not args.no_chart):
         print(f"wrote {p}")
     return 0

@@ -259,3 +259,19 @@ def test_line_and_scattered_evaluation_agree():
                               tau.ravel()[perm])
     for f in ("delta", "impulse", "force"):
         np.testing.assert_allclose(flat[f], grid[f].ravel()[perm], rtol=1e-14, atol=1e-300)
+
+
+def test_blocks_do_not_change_the_numbers():
+    """A grid of several blocks (``table._BLOCK`` points each) gives, point for point, what each
+    of its lines gives alone (one block), to the ulp (the lambda contraction's matrix product
+    may round differently for another number of lines)."""
+    lam = np.array([0.0, 0.3, 4.0, 17.0, 999.0, 2.5])
+    n = exact_fast._BLOCK // 2 + 17
+    s = zs.summary(lam, model="exact")
+    tau = s.tau_d[:, None] * np.linspace(0.0, 1.1, n)[None, :]
+    grid = exact_fast.history(np.broadcast_to(lam[:, None], tau.shape), tau)
+    for i, x in enumerate(lam):
+        one = exact_fast.history(np.full(n, x), tau[i])
+        for f in ("delta", "impulse", "force", "velocity"):
+            np.testing.assert_allclose(grid[f][i], one[f], rtol=1e-15,
+                                       atol=1e-15 * np.abs(one[f]).max())

@@ -74,3 +74,15 @@ def test_horner_take_against_polyval_with_rows_by_index():
     x = rng.uniform(-1, 1, 200)
     ref = np.array([np.polynomial.polynomial.polyval(xi, rows[:, r]) for xi, r in zip(x, idx)])
     np.testing.assert_allclose(hn.horner_take(rows, idx, x), ref, rtol=1e-13, atol=1e-14)
+
+
+def test_horner_take_pair_against_polyval_with_rows_by_index():
+    """Both polynomials of the complex rows (real part, imaginary part) against polyval."""
+    rng = np.random.default_rng(4)
+    re, im = rng.normal(size=(2, 11, 7))  # [power, row] each
+    idx = rng.integers(0, 7, 300)
+    x = rng.uniform(-1, 1, 300)
+    p, q = hn.horner_take_pair(re + 1j * im, idx, x)
+    for got, c in ((p, re), (q, im)):
+        ref = np.array([np.polynomial.polynomial.polyval(xi, c[:, r]) for xi, r in zip(x, idx)])
+        np.testing.assert_allclose(got, ref, rtol=1e-13, atol=1e-14)

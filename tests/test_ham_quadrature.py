@@ -89,3 +89,19 @@ def test_impulse_series_against_the_rule_on_lines_and_scattered():
                   (1.0, np.inf)):
         with pytest.raises(ValueError, match="impulse_s"):
             impulse_s(a, th)
+
+
+def test_ks_series_blocks_against_the_rule():
+    """KsSeries.at, the block evaluator models call, at rates given per point in any order
+    (past pi: K_s(a, pi)) against the Gauss-Jacobi rule; rates outside [0, A_SERIES] refused."""
+    from zener_sym.ham.quadrature import A_SERIES, KsSeries
+
+    u = np.array([0.0, 1.7, 6.0, A_SERIES])
+    rng = np.random.default_rng(5)
+    iv = rng.integers(0, u.size, 500)
+    th = rng.uniform(0.0, 1.2 * np.pi, 500)
+    ref = sqrt_integrals(u[iv], np.minimum(th, np.pi), ("s",))["s"]
+    assert np.max(np.abs(KsSeries(u).at(th, iv) - ref)) < 2e-14
+    for bad in ([-0.1], [np.nan], [1.01 * A_SERIES]):
+        with pytest.raises(ValueError, match="KsSeries"):
+            KsSeries(bad)

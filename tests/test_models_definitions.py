@@ -119,3 +119,35 @@ def test_ham0_series_impulse_matches_the_generated_kernel():
     h = zs.history(lam, tau, model="ham0")
     ref = h0.impulse(np.broadcast_to(tau, h.impulse.shape), np.broadcast_to(lam, h.impulse.shape))
     np.testing.assert_allclose(h.impulse, ref, rtol=2e-12, atol=1e-14)
+
+
+def test_line_blocks_cover_the_grid_once():
+    from zener_sym.models.base import line_blocks
+
+    for n_lines, n_col, size in ((7, 3, 8), (3, 20, 8), (1, 1, 8), (5, 8, 8)):
+        hits = np.zeros((n_lines, n_col), dtype=int)
+        for r0, r1, c0, c1 in line_blocks(n_lines, n_col, size):
+            assert (r1 - r0) * (c1 - c0) <= size
+            hits[r0:r1, c0:c1] += 1
+        assert np.all(hits == 1)
+
+
+@pytest.mark.parametrize("shape", [(1, 20000), (20000,), (3, 7)])
+def test_ham0_history_by_blocks_matches_the_generated_kernels(shape):
+    """ham0's block-by-block history (lines longer than a block, one lambda per point, a small
+    grid) against the generated delta0 and impulse (quadrature) at every point."""
+    from zener_sym.generated import ham0_numpy as h0
+
+    rng = np.random.default_rng(6)
+    if len(shape) == 2 and shape[0] == 1:
+        lam = np.full(shape, 1.3)
+    else:
+        lam = rng.uniform(0.0, 2.4, shape)
+    tau = rng.uniform(0.0, 1.1, shape) * h0.summary(lam)["tau_d"]
+    h = zs.history(lam, tau, model="ham0")
+    on = tau < h0.summary(lam)["tau_d"]
+    np.testing.assert_allclose(h.delta, np.where(on, np.maximum(h0.delta0(tau, lam), 0.0), 0.0),
+                               rtol=1e-14, atol=1e-300)
+    pick = (slice(None, None, 97),) * len(shape)  # the quadrature costs 64 nodes a point
+    np.testing.assert_allclose(h.impulse[pick], h0.impulse(tau[pick], lam[pick]), rtol=2e-12,
+                               atol=1e-14)

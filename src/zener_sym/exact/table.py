@@ -24,7 +24,7 @@ import importlib
 
 import numpy as np
 
-from ..ham.chebyshev import horner_take
+from ..ham.chebyshev import horner_take_pair
 from . import solver as _solver
 from . import table_build as _build
 
@@ -39,6 +39,9 @@ HISTORY_LAM_MAX = float(_build.HISTORY_TO)
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
 HISTORY_ATOL = 1e-10
+#: Points per block of the history evaluation (8192: a block's float temporaries, 64 kB each,
+#: stay in cache and below the allocator's mmap threshold).
+_BLOCK = 8192
 
 
 def _stack_summary(mats) -> np.ndarray:
@@ -100,12 +103,14 @@ def _tables():
 
 def _history_layout(history, log) -> dict:
     """The history coefficients arranged for ``history``: per time piece and lambda piece one
-    array [field * deg + time degree, lambda degree, sub-piece] (deg: the time piece's largest
-    degree; f's coefficients, then I's), the time direction converted from
-    Chebyshev to monomial coefficients in the sub-piece's x (so the evaluation is Horner's rule,
-    three passes over the points per degree instead of Clenshaw's four; on a sub-piece the
-    coefficients fall fast, so the conversion loses no digits that matter, tested against the
-    Chebyshev sum in tests/test_exact_fast.py)."""
+    array [time degree, lambda degree, 2 * sub-piece + field] (field 0: f, 1: I; zero-padded to
+    the time piece's largest degree), so the lambda contraction gives per line the pairs
+    (f_j, I_j) next to each other, read as one complex128 per sub-piece by
+    ``horner_take_pair``. The time direction is converted from Chebyshev to monomial
+    coefficients in the sub-piece's x (so the evaluation is Horner's rule, three passes over
+    the points per degree instead of Clenshaw's four; on a sub-piece the coefficients fall
+    fast, so the conversion loses no digits that matter, tested against the Chebyshev sum in
+    tests/test_exact_fast.py)."""
     n_lam = len(log)
     layout = {}
     for piece in _build.TIME_PIECES:
@@ -123,17 +128,18 @@ def _history_layout(history, log) -> dict:
             a[: st[k].shape[0], : st[k].shape[1], : st[k].shape[2], : st[k].shape[3]] = st[k]
             fields.append(np.einsum("ij,psjk->psik", conv, a))
         blk = np.stack(fields, axis=2)  # [lp, sub, field, deg, k]
-        # per lambda piece [field * deg + time degree, lambda degree, sub-piece], trimmed in
+        # per lambda piece [time degree, lambda degree, sub-piece * 2 + field], trimmed in
         # lambda degree; None where the piece has no coefficients (piece M below LOG_FROM)
         per = []
         for p in range(n_lam):
             if not len(history[(piece, "f")][p]):
                 per.append(None)
                 continue
-            b = blk[p].reshape(n_sub, 2 * deg, -1)  # [sub, field * deg + j, k]
-            nz = np.flatnonzero(np.any(b != 0.0, axis=(0, 1)))
+            b = blk[p]  # [sub, field, j, k]
+            nz = np.flatnonzero(np.any(b != 0.0, axis=(0, 1, 2)))
             n_k = int(nz.max()) + 1 if nz.size else 1
-            per.append(np.ascontiguousarray(b[:, :, :n_k].transpose(1, 2, 0)))
+            per.append(np.ascontiguousarray(
+                b[..., :n_k].transpose(2, 3, 0, 1).reshape(deg, n_k, 2 * n_sub)))
         # per lambda piece, the degree its trimmed coefficients need (Horner starts there)
         need = np.array([max([int(c.split(" ", 1)[0]) if isinstance(c, str) else np.shape(c)[0]
                               for k in _build.HISTORY_KEYS for c in history[(piece, k)][p]]
@@ -206,27 +212,22 @@ def summary(lam) -> dict:
             "xi": 2.0 * lam * v["int_F2"]}
 
 
-def _piece_coefficients(per, ip, tl_all, n_rows, n_sub):
-    """[field * deg + time degree, lambda * sub-piece]: one time piece's monomial coefficients
-    per line, sum_k C[c, k, s] T_k(x_lambda). lu is sorted, so each lambda piece's lines are one
-    slice; one stacked matrix product per lambda piece present."""
-    out = np.zeros((n_rows, len(ip), n_sub))
+def _piece_coefficients(per, ip, tl_all, deg, n_sub):
+    """[time degree, line * sub-piece], complex: one time piece's monomial coefficients per line
+    (real part f's, imaginary part I's), sum_k C[j, k, 2 s + field] T_k(x_lambda). lu is sorted,
+    so each lambda piece's lines are one slice; one stacked matrix product per lambda piece
+    present."""
+    out = np.zeros((deg, len(ip), 2 * n_sub))
     for p in np.unique(ip):
         c = per[int(p)]
         if c is None:
             continue
         a, b = np.searchsorted(ip, p), np.searchsorted(ip, p, side="right")
         tl = tl_all[a:b, : c.shape[1]]  # T_k(x_lambda), [lambda, k]
-        # one small matrix product per coefficient (a stack of them): lambda x k times
-        # k x sub-piece, written straight into the [coefficient, lambda, sub-piece] layout
+        # one small matrix product per time degree (a stack of them): lambda x k times
+        # k x (sub-piece, field), written straight into the [degree, lambda, ...] layout
         np.matmul(tl, c, out=out[:, a:b])
-    return out.reshape(n_rows, -1)
-
-
-def _horner_rows(cT, rows, x, deg, need):
-    """f and I at the points: cT[j, r] is the coefficient of x^j of f on row r, cT[deg + j, r]
-    that of I (zero beyond ``need``). Rows are in range by construction."""
-    return horner_take(cT[:need], rows, x), horner_take(cT[deg:deg + need], rows, x)
+    return out.reshape(deg, -1).view(np.complex128)
 
 
 def _scaled_maps(name, k, lu, log, v, tau_s):
@@ -252,25 +253,83 @@ def _scaled_maps(name, k, lu, log, v, tau_s):
     return out
 
 
+def _reduced_time(name, m, k, t, li):
+    """z = k y, the reduced time of piece ``name`` times its sub-piece count, at times t on the
+    lines li (``_scaled_maps``' constants gathered per point), and d = tau_d on the lines (piece
+    B's factor, None elsewhere)."""
+    if name == "C":
+        z = t * m["a"].take(li, mode="clip")
+        return np.sqrt(z, out=z), None
+    if name == "B":
+        d = m["d"].take(li, mode="clip")
+        z = d - t
+        z *= m["a"].take(li, mode="clip")
+        return np.sqrt(z, out=z), d
+    ts = t - m["s"].take(li, mode="clip")
+    z = -m["u0"].take(li, mode="clip")
+    if "i1" in m:
+        ts *= m["i1"].take(li, mode="clip") if "i3" not in m else 1.0
+        if "i3" in m:
+            z += ts * m["i3"].take(li, mode="clip")
+            ts *= m["i1"].take(li, mode="clip")
+        z += np.log1p(ts, out=ts)
+    elif "i3" in m:
+        z += ts * m["i3"].take(li, mode="clip")
+    if "i2" in m:
+        te = m["e"].take(li, mode="clip")
+        te -= t
+        te *= m["i2"].take(li, mode="clip")
+        z -= np.log1p(te, out=te)
+    z *= m["a"].take(li, mode="clip")
+    return z, None
+
+
+def _piece_values(name, prep, t, li, lu):
+    """delta and the impulse at times t (all in time piece ``name``) on the lines li."""
+    m, cT, k, deg, nd = prep
+    z, d = _reduced_time(name, m, k, t, li)
+    sub = z.astype(np.intp)  # z >= 0: truncation is floor
+    if sub.min() < 0:  # a NaN or a point outside its piece: never index a wrong row
+        raise RuntimeError(f"exact history table: reduced time out of range in piece "
+                           f"{name} (lambda {lu[li[sub < 0][0]]!r}); this is a bug")
+    np.minimum(sub, k - 1, out=sub)
+    x = z - sub
+    x *= 2.0
+    x -= 1.0
+    sub += li * k  # the point's row: line, sub-piece
+    f, i = horner_take_pair(cT[:nd], sub, x)
+    g = np.ascontiguousarray(f)  # exp is vectorized on contiguous data only
+    np.exp(g, out=g)
+    if name == "C":
+        g *= t
+    elif name == "B":
+        d -= t
+        g *= d
+    return g, i
+
+
 def history(lam, tau) -> dict:
     """delta, impulse, velocity (1 - I) and force (delta^{3/2}) at (lam, tau), same shapes.
 
     lam and tau must already be broadcast to one shape; lambda in [LAM_MIN, HISTORY_LAM_MAX],
     tau >= 0.
     The lambda direction is contracted once per distinct lambda and time piece; each time point
-    then costs its piece's map, one polynomial of degree <= 15 per field (Horner, all points of
-    a time piece at once) and an exponential. When lambda is a broadcast column (one lambda per
-    line of tau), the piece of each point is found against its line's bounds by broadcasting.
+    then costs its piece's map, one polynomial of degree <= 15 per field (Horner) and an
+    exponential. The points of each time piece are evaluated in blocks of ``_BLOCK``: per-point
+    temporaries as large as the grid cost more in fresh memory (page faults, and time that
+    depends on how the allocator was last used) than in arithmetic. When lambda is a broadcast
+    column (one lambda per line of tau), points are assigned to lines and pieces by
+    broadcasting against each line's bounds, without a per-point sort.
     """
     lam = np.asarray(lam, dtype=float)
     tau = np.asarray(tau, dtype=float)
     shape = tau.shape
-    line = None  # lambda index of each line of tau when lambda is one column (a line each)
+    n_col = None  # points per line of tau when lambda is one column (a line each)
     if lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(
             lam, np.broadcast_to(lam[..., :1], lam.shape)):
         # one lambda per line of tau (a broadcast column): sort the lines, not every point
         lu, line = np.unique(lam[..., 0].ravel(), return_inverse=True)
-        inv = np.repeat(line, lam.shape[-1])
+        n_col = lam.shape[-1]
     else:
         lu, inv = np.unique(lam.ravel(), return_inverse=True)
     if not np.all(history_in_range(lu)):
@@ -285,74 +344,45 @@ def history(lam, tau) -> dict:
     # 4 after the contact
     # (1 + [tau >= tau_s] + [tau >= tau_w0] + [tau >= tau_d]) [tau > tau_dc]: the last factor
     # keeps tau = tau_dc in C where the pieces between are empty (lambda = 0: all bounds equal)
-    if line is not None:  # per-line bounds broadcast along each line: no gather per point
-        t2 = tau.reshape(len(line), -1)
-        piece = (t2 >= tau_s[line, None]).view(np.int8)
-        piece += t2 >= v["tau_w0"][line, None]
-        piece += t2 >= v["tau_d"][line, None]
-        piece += 1
-        piece *= t2 > v["tau_dc"][line, None]
-        piece = piece.ravel()
-        imp = np.repeat(1.0 + v["e"][line], t2.shape[1])
+    bounds = (tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"])
+    if n_col is not None:  # per-line bounds broadcast along each line: no gather per point
+        t2 = tau.reshape(len(line), n_col)
+        b = [q[line, None] for q in bounds]
     else:
-        piece = (tau >= tau_s.take(inv, mode="clip")).view(np.int8)
-        piece += tau >= v["tau_w0"].take(inv, mode="clip")
-        piece += tau >= v["tau_d"].take(inv, mode="clip")
-        piece += 1
-        piece *= tau > v["tau_dc"].take(inv, mode="clip")
-        imp = (1.0 + v["e"]).take(inv, mode="clip")
-    # (imp: after the contact the impulse keeps its final value)
-    delta = np.zeros(tau.shape)
+        t2 = tau
+        b = [q.take(inv, mode="clip") for q in bounds]
+    piece = (t2 >= b[0]).view(np.int8)
+    piece += t2 >= b[1]
+    piece += t2 >= b[2]
+    piece += 1
+    piece *= t2 > b[3]
+    piece = piece.ravel()
+    out = {f: np.empty(tau.shape) for f in ("delta", "impulse", "velocity", "force")}
     layout = _tables()["history"]
     tl_all = np.polynomial.chebyshev.chebvander(xl, max(
         c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)
-    for n, name in enumerate(_build.TIME_PIECES):
-        at = np.flatnonzero(piece == n)
-        if at.size == 0:
+    imp_end = 1.0 + v["e"]  # after the contact the impulse keeps its final value
+    for n, name in enumerate((*_build.TIME_PIECES, None)):
+        at_all = np.flatnonzero(piece == n)
+        if at_all.size == 0:
             continue
-        t, li = tau.take(at, mode="clip"), inv.take(at, mode="clip")
-        per, k, deg, need = layout[name]
-        m = _scaled_maps(name, k, lu, log, v, tau_s)
-        if name == "C":
-            z = t * m["a"].take(li, mode="clip")
-            np.sqrt(z, out=z)
-        elif name == "B":
-            d = m["d"].take(li, mode="clip")
-            z = d - t
-            z *= m["a"].take(li, mode="clip")
-            np.sqrt(z, out=z)
-        else:
-            ts = t - m["s"].take(li, mode="clip")
-            z = -m["u0"].take(li, mode="clip")
-            if "i1" in m:
-                z += np.log1p(ts * m["i1"].take(li, mode="clip"))
-            if "i3" in m:
-                z += ts * m["i3"].take(li, mode="clip")
-            if "i2" in m:
-                te = m["e"].take(li, mode="clip")
-                te -= t
-                te *= m["i2"].take(li, mode="clip")
-                z -= np.log1p(te, out=te)
-            z *= m["a"].take(li, mode="clip")
-        sub = z.astype(np.intp)  # z >= 0: truncation is floor
-        if sub.min() < 0:  # a NaN or a point outside its piece: never index a wrong row
-            raise RuntimeError(f"exact history table: reduced time out of range in piece "
-                               f"{name} (lambda {lu[li[sub < 0][0]]!r}); this is a bug")
-        np.minimum(sub, k - 1, out=sub)
-        x = z - sub
-        x *= 2.0
-        x -= 1.0
-        rows = li * k + sub
-        cT = _piece_coefficients(per, ip, tl_all, 2 * deg, k)  # [f's then I's, lambda * sub]
-        f, i = _horner_rows(cT, rows, x, deg, int(need[ip].max()))
-        g = np.exp(f, out=f)
-        if name == "C":
-            g *= t
-        elif name == "B":
-            g *= d - t
-        delta[at] = g
-        imp[at] = i
-    delta = delta.reshape(shape)
-    imp = imp.reshape(shape)
-    return {"delta": delta, "impulse": imp, "velocity": 1.0 - imp,
-            "force": delta * np.sqrt(delta)}
+        if name is not None:
+            per, k, deg, need = layout[name]
+            prep = (_scaled_maps(name, k, lu, log, v, tau_s), _piece_coefficients(
+                per, ip, tl_all, deg, k), k, deg, int(need[ip].max()))
+        for s in range(0, at_all.size, _BLOCK):
+            at = at_all[s:s + _BLOCK]
+            li = line.take(at // n_col, mode="clip") if n_col is not None else inv.take(
+                at, mode="clip")
+            if name is None:
+                out["delta"][at] = 0.0
+                out["impulse"][at] = imp_end.take(li, mode="clip")
+            else:
+                out["delta"][at], out["impulse"][at] = _piece_values(
+                    name, prep, tau.take(at, mode="clip"), li, lu)
+    for s in range(0, tau.size, _BLOCK):  # the derived fields, block by block (as above)
+        d, f = out["delta"][s:s + _BLOCK], out["force"][s:s + _BLOCK]
+        np.sqrt(d, out=f)
+        f *= d
+        np.subtract(1.0, out["impulse"][s:s + _BLOCK], out=out["velocity"][s:s + _BLOCK])
+    return {key: a.reshape(shape) for key, a in out.items()}

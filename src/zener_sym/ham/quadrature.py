@@ -199,15 +199,6 @@ def _ks_table():
     return _KS_TABLE
 
 
-def _trimmed(c, tol=1e-14):
-    """c[:, :k] with the theta degrees beyond k all below tol times each piece's largest
-    magnitude (c is [piece, theta degree, rate])."""
-    mag = np.abs(c).max(axis=2)
-    keep = mag > tol * mag.max(axis=1, keepdims=True)
-    last = max(int(np.nonzero(row)[0].max()) if row.any() else 0 for row in keep)
-    return c[:, : last + 1]
-
-
 def impulse_s(a, theta):
     """K_s(a, theta) = int_0^min(theta, pi) exp(-a t) sin^{3/2} t dt, fast for many theta per a.
 
@@ -225,18 +216,16 @@ def impulse_s(a, theta):
     if not (lo >= 0 and hi < np.inf):  # a NaN fails both
         raise ValueError("impulse_s: theta must be finite and >= 0")
     if column and np.all(rates <= A_SERIES):
-        u, inv = np.unique(rates[..., 0], return_inverse=True)
-        inv = np.repeat(inv.ravel(), a.shape[-1])
-        th = np.minimum(theta, np.pi).ravel()
-        return _series_eval(u, inv, th).reshape(a.shape)
+        u, line = np.unique(rates[..., 0], return_inverse=True)
+        return _series_eval(u, theta.reshape(-1), line=line.ravel(),
+                            n_col=a.shape[-1]).reshape(a.shape)
     out = np.empty(a.shape)
     fast = a <= A_SERIES
     if (~fast).any():
         out[~fast] = sqrt_integrals(a[~fast], theta[~fast], ("s",))["s"]
     if fast.any():
-        af, th = a[fast], np.minimum(theta[fast], np.pi)
-        u, inv = np.unique(af, return_inverse=True)
-        out[fast] = _series_eval(u, inv, th)
+        u, inv = np.unique(a[fast], return_inverse=True)
+        out[fast] = _series_eval(u, theta[fast], inv=inv)
     return out
 
 
@@ -249,43 +238,76 @@ def _cheb_to_monomial(n):
     return m
 
 
-def _series_eval(u, inv, th):
-    """K_s at phases th (in [0, pi]) for the rates u[inv] (all <= A_SERIES), from the series."""
+@functools.cache
+def _ks_pieces():
+    """[theta degree, q, a degree]: K_s's Chebyshev series in each theta piece's local variable
+    x = 2 (theta - q w) / w - 1 (w = _WIDTH, q = 0 ... 2 N_PIECES - 1 along [0, pi]). Pieces
+    q < N_PIECES hold G (K_s = theta^{5/2} G); the right half's H, a series in r = pi - theta
+    whose local variable is -x there, is stored with the odd degrees negated (T_j(-x) =
+    (-1)^j T_j(x)) and the whole sign flipped, so that K_s = K_s(a, pi) + r^{5/2} P(x) with P
+    the stored series: one row per (piece, rate) serves both halves."""
     cG, cH = _ks_table()
-    Ta = np.polynomial.chebyshev.chebvander(2.0 * u / A_SERIES - 1.0, N_RATE - 1)
-    # [piece, theta degree, distinct a]; the trailing theta terms at the noise level of the 2-D
-    # fit for every rate at hand are dropped: each costs a Horner step
-    gG, gH = _trimmed(cG @ Ta.T), _trimmed(cH @ Ta.T)
-    # K_s(a, pi): both series at their end r = theta = pi/2 (the last piece's x = 1, T_j(1) = 1)
-    k_pi = (np.pi / 2) ** 2.5 * (gG[-1].sum(axis=0) + gH[-1].sum(axis=0))
-    # monomial coefficients in each short piece's local variable (well conditioned there: they
-    # fall off like a Taylor series), one row per (side, piece, rate), both sides padded to one
-    # degree, so every point takes one Horner pass without being sorted by side first
-    deg = max(gG.shape[1], gH.shape[1])
-    mono = [_cheb_to_monomial(deg) @ np.pad(g, ((0, 0), (0, deg - g.shape[1]), (0, 0)))
-            for g in (gG, gH)]  # [piece, power, rate] each
-    rows = np.concatenate(mono).transpose(1, 0, 2).reshape(deg, -1)
-    n = u.size
-    out = np.empty(th.shape)
-    # blocks of points small enough that the dozen temporaries stay in cache: on a
-    # 200 x 500 history the unblocked passes cost about 3x more than their arithmetic
-    for s in range(0, th.size, _BLOCK):
-        t, iv = th[s:s + _BLOCK], inv[s:s + _BLOCK]
-        left = t <= np.pi / 2
-        y = np.where(left, t, np.pi - t)  # theta on the left, r = pi - theta on the right
-        row = (y * (1.0 / _WIDTH)).astype(np.intp)
-        np.minimum(row, N_PIECES - 1, out=row)
-        x = row * (-_WIDTH)
-        x += y
-        x *= 2.0 / _WIDTH
+    flip = -((-1.0) ** np.arange(cG.shape[1]))[:, None, None]
+    return np.concatenate([cG.transpose(1, 0, 2), flip * cH[::-1].transpose(1, 0, 2)], axis=1)
+
+
+class KsSeries:
+    """K_s(u[i], theta) from the series for a fixed set of rates u (all in [0, A_SERIES]): the
+    a direction is contracted once here, so callers that evaluate a history block by block (a
+    model keeping its temporaries cache-sized) pay it once. ``at`` evaluates one block."""
+
+    def __init__(self, u):
+        u = np.asarray(u, dtype=float).ravel()
+        if not (np.all(np.isfinite(u)) and np.all(u >= 0) and np.all(u <= A_SERIES)):
+            raise ValueError(f"KsSeries: the decay rates must be finite and in [0, {A_SERIES:g}]")
+        n = self.n = u.size
+        Ta = np.polynomial.chebyshev.chebvander(2.0 * u / A_SERIES - 1.0, N_RATE - 1)
+        c = _ks_pieces() @ Ta.T  # [theta degree, piece, rate]
+        # K_s(a, pi) = (pi/2)^{5/2} (G + H) at theta = r = pi/2: G's last piece at x = 1, H's
+        # (stored as piece N_PIECES, in -x and with the sign flipped) at x = -1
+        alt = (-1.0) ** np.arange(c.shape[0])[:, None]
+        k_pi = (np.pi / 2) ** 2.5 * (c[:, N_PIECES - 1].sum(axis=0)
+                                     - (alt * c[:, N_PIECES]).sum(axis=0))
+        # the trailing theta degrees at the noise level of the 2-D fit for every rate at hand
+        # are dropped (each costs every point a Horner step), then the rest turned into
+        # monomials in x (well conditioned on a short piece: they fall off like a Taylor series)
+        mag = np.abs(c).max(axis=2)
+        deg = int(np.flatnonzero(np.any(mag > 1e-14 * mag.max(axis=0), axis=1)).max()) + 1
+        self.rows = _cheb_to_monomial(deg) @ c[:deg].reshape(deg, -1)  # [power, piece * rate]
+        self.base = np.concatenate([np.zeros(N_PIECES * n), np.tile(k_pi, N_PIECES)])  # per row
+
+    def at(self, th, iv):
+        """K_s at the phases th (1-D, >= 0; past pi: K_s(a, pi)) for the rates u[iv]; iv must be
+        in range (it indexes without a bounds check)."""
+        t = np.minimum(th, np.pi)
+        u_ = t * (1.0 / _WIDTH)
+        row = u_.astype(np.intp)
+        np.minimum(row, 2 * N_PIECES - 1, out=row)
+        x = u_ - row
+        x *= 2.0
         x -= 1.0
-        np.clip(x, -1.0, 1.0, out=x)
-        row += np.where(left, 0, N_PIECES)
-        row *= n
+        row *= self.n
         row += iv
+        y = np.pi - t
+        np.minimum(y, t, out=y)  # theta on the left half, r = pi - theta on the right
         val = np.sqrt(y)
         val *= y
         val *= y
-        val *= horner_take(rows, row, x)
-        out[s:s + _BLOCK] = np.where(left, val, k_pi[iv] - val)
+        val *= horner_take(self.rows, row, x)
+        val += self.base.take(row, mode="clip")
+        return val
+
+
+def _series_eval(u, th, inv=None, line=None, n_col=None):
+    """K_s at phases th for the rates u (all <= A_SERIES), from the series: point i has the rate
+    u[inv[i]], or, with ``line``, u[line[i // n_col]] (a rate per line of n_col points, so no
+    per-point index array is built). th >= 0; phases past pi give K_s(a, pi)."""
+    series = KsSeries(u)
+    out = np.empty(th.shape)
+    # blocks of points small enough that the dozen temporaries stay in cache (and below the
+    # allocator's mmap threshold): whole-array temporaries cost more than their arithmetic
+    for s in range(0, th.size, _BLOCK):
+        e = min(s + _BLOCK, th.size)
+        iv = inv[s:e] if line is None else line.take(np.arange(s, e) // n_col, mode="clip")
+        out[s:e] = series.at(th[s:e], iv)
     return out

@@ -16,7 +16,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from .base import Model, register
+from .base import Model, line_blocks, register
 
 
 def _gen(name):
@@ -84,27 +84,7 @@ class Ham0(_HamModel):
         h0, m0 = _gen("ham0_numpy"), _gen("ham0_mpmath")
         want = set(self.history_fields if fields is None else fields)
         if backend == "numpy":
-            from ..ham.quadrature import impulse_s
-
-            if lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(
-                    lam, np.broadcast_to(lam[..., :1], lam.shape)):
-                lam = lam[..., :1]  # a broadcast column: the parameters once per line
-            k, beta, omega0 = h0.params(lam)
-            # the summary's tau_d (generated: pi * omega0**(-1.0)), so delta is exactly 0 from
-            # there on (omega0 tau <= pi left sin(pi) = 1e-16 at tau_d)
-            on = tau < np.pi * omega0 ** (-1.0)
-            out = {}
-            if want & {"delta", "force"}:
-                d = np.where(on, np.maximum(h0.delta(tau, lam), 0.0), 0.0)
-                out["delta"], out["force"] = d, d * np.sqrt(d)
-            if want & {"impulse", "velocity"}:
-                # Eq. (47): omega0^{-5/2} K_s(3 beta / (2 omega0), omega0 tau), as the generated
-                # h0.impulse, with K_s from per-rate Chebyshev series instead of a 64-node rule
-                # per point (tests hold the two within 1e-13)
-                a = np.broadcast_to(1.5 * beta / omega0, tau.shape)
-                imp = impulse_s(a, omega0 * tau) / omega0**2.5
-                out["impulse"], out["velocity"] = imp, 1.0 - imp
-            return out
+            return self._history_numpy(h0, lam, tau, want)
         else:
             d, imp, force = (np.empty(tau.shape) for _ in range(3))
             for i in np.ndindex(tau.shape):
@@ -116,6 +96,58 @@ class Ham0(_HamModel):
                     imp[i] = float(m0.impulse(t, x))
                     force[i] = d[i] ** 1.5  # delta0^{3/2} (45), 0 from tau_d on
         return {"delta": d, "force": force, "impulse": imp, "velocity": 1.0 - imp}
+
+
+    @staticmethod
+    def _history_numpy(h0, lam, tau, want):
+        """The numpy history, one block of lines at a time (``base.line_blocks``): the generated
+        delta0 (35) clipped to its contact, and the impulse (47) omega0^{-5/2}
+        K_s(3 beta / (2 omega0), omega0 tau) from the per-rate Chebyshev series of K_s
+        (``ham.quadrature.KsSeries``, within 1e-13 of the generated h0.impulse's quadrature,
+        tests), its rates contracted once for all blocks."""
+        from ..ham.quadrature import A_SERIES, KsSeries, impulse_s
+
+        shape = tau.shape
+        column = lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(
+            lam, np.broadcast_to(lam[..., :1], lam.shape))
+        # one lambda per line (a broadcast column): the parameters once per line; otherwise
+        # every point is a line of its own
+        lines = lam[..., 0].ravel() if column else lam.ravel()
+        n_col = shape[-1] if column else 1
+        t2 = tau.reshape(lines.size, n_col)
+        _, beta, omega0 = h0.params(lines)
+        # the summary's tau_d (generated: pi * omega0**(-1.0)), so delta is exactly 0 from there
+        # on (omega0 tau <= pi left sin(pi) = 1e-16 at tau_d)
+        tau_d = np.pi * omega0 ** (-1.0)
+        rate = 1.5 * beta / omega0
+        scale = omega0 ** -2.5
+        series = None
+        if want & {"impulse", "velocity"} and np.all(rate <= A_SERIES):
+            u, rate_of_line = np.unique(rate, return_inverse=True)
+            series = KsSeries(u)
+        out = {f: np.empty(t2.shape) for f in ("delta", "force", "impulse", "velocity")}
+        for r0, r1, c0, c1 in line_blocks(lines.size, n_col):
+            t = t2[r0:r1, c0:c1]
+            if want & {"delta", "force"}:
+                d = out["delta"][r0:r1, c0:c1]
+                d[...] = h0.delta(t, lines[r0:r1, None])
+                np.maximum(d, 0.0, out=d)
+                np.copyto(d, 0.0, where=t >= tau_d[r0:r1, None])
+                f = out["force"][r0:r1, c0:c1]
+                np.sqrt(d, out=f)
+                f *= d
+            if series is not None:
+                theta = t * omega0[r0:r1, None]
+                k = series.at(theta.ravel(), np.repeat(rate_of_line[r0:r1], c1 - c0))
+                imp = out["impulse"][r0:r1, c0:c1]
+                np.multiply(k.reshape(t.shape), scale[r0:r1, None], out=imp)
+                np.subtract(1.0, imp, out=out["velocity"][r0:r1, c0:c1])
+        if want & {"impulse", "velocity"} and series is None:
+            # a rate beyond the series' range (lambda near lam_crit): K_s by quadrature
+            out["impulse"] = impulse_s(rate[:, None], t2 * omega0[:, None]) * scale[:, None]
+            out["velocity"] = 1.0 - out["impulse"]
+        groups = [g for g in (("delta", "force"), ("impulse", "velocity")) if want & set(g)]
+        return {f: out[f].reshape(shape) for g in groups for f in g}
 
 
 class Ham1(_HamModel):

@@ -28,3 +28,18 @@ def timed(fn, min_repeats: int = 3, min_total: float = 0.2, max_repeats: int = 2
 def median_time(fn, min_repeats: int = 3, min_total: float = 0.2, max_repeats: int = 200) -> float:
     """Median wall time of ``fn()`` in seconds (see ``timed``)."""
     return timed(fn, min_repeats, min_total, max_repeats)[1]
+
+
+def alternating_median_times(fns, rounds: int = 15) -> list:
+    """Median wall time in seconds of each of ``fns``, timed in alternation (f0, f1, ..., f0, f1,
+    ...) after one warm-up call each, so that drifts in load, clock or allocator state fall on
+    every side of a ratio alike rather than on whichever was timed first."""
+    for fn in fns:
+        fn()
+    times = [[] for _ in fns]
+    for _ in range(rounds):
+        for fn, t in zip(fns, times):
+            t0 = time.perf_counter()
+            fn()
+            t.append(time.perf_counter() - t0)
+    return [statistics.median(t) for t in times]

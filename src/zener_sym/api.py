@@ -232,8 +232,9 @@ def history(lam, tau, model: str = "exact", fields=None, **options) -> History:
         raise ValueError(
             f"lambda of shape {arr.shape} does not broadcast against tau of shape {t.shape}"
         ) from None
-    values = m.history_values(np.ascontiguousarray(lam_b), np.ascontiguousarray(tau_b), want,
-                              **options)
+    # lambda stays a broadcast view (a column of lambda against a grid of tau is not copied
+    # to the grid's size: models detect it and work per line)
+    values = m.history_values(lam_b, np.ascontiguousarray(tau_b), want, **options)
     # every field has the broadcast shape, () for scalar lambda and tau
     values = {k: np.asarray(v, dtype=float).reshape(tau_b.shape) for k, v in values.items()}
     values["tau"] = tau_b.copy()

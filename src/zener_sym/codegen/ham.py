@@ -31,6 +31,14 @@ class _NumpyPrinter(NumPyPrinter):
         return f"numpy.arctan2({self._print(e.args[0])}, {self._print(e.args[1])})"
 
 
+class _HalfWavePrinter(_NumpyPrinter):
+    """For delta0 on its contact only: its one sine, of the phase omega0 tau, is printed as the
+    first half wave (``ham.chebyshev.half_wave_sin``: sin on [0, pi], 0 beyond; vectorized)."""
+
+    def _print_sin(self, e):
+        return f"_hn.half_wave_sin({self._print(e.args[0])})"
+
+
 class _MpPrinter(MpmathPrinter):
     def _print_P3(self, e):
         return f"_p3({self._print(e.args[0])})"
@@ -158,6 +166,15 @@ def force(tau, lam):
     k, beta, omega0 = params(lam)
     d = delta0(tau, lam)
     return numpy.where(omega0 * tau <= numpy.pi, numpy.maximum(d, 0.0), 0.0) ** 1.5
+
+
+def delta_contact(tau, lam):
+    """delta0 (35) on the zeroth-order contact 0 <= omega0 tau <= pi, 0 after (Eq. 54): the sine
+    is its first half wave (zener_sym.ham.chebyshev.half_wave_sin, vectorized, within 3 ulp)."""
+    tau, lam = _inputs_narrow(tau, lam)
+    k, beta, omega0 = params(lam)
+{delta_contact_block}
+    return out
 
 
 def impulse(tau, lam):
@@ -334,7 +351,11 @@ def build_ham0_numpy() -> str:
     """generated/ham0_numpy.py: zeroth-order kernels and closed forms, float64 numpy."""
     e, lam_crit = _common()
     text, p = _np_prelude(e, lam_crit, "Zeroth-order HAM kernels of Zener's equation (10), numpy float64.")
+    sines = e["delta0"].atoms(sp.sin)
+    if len(sines) != 1 or next(iter(sines)).args[0] != Y["omega0"] * Y["tau"]:
+        raise ValueError(f"delta_contact expects one sine of omega0*tau in delta0, got {sines}")
     return text + _NP_HAM0.format(
+        delta_contact_block=_block(_HalfWavePrinter(), [("out", e["delta0"])]),
         a_imp_block=_block(p, [("a_imp", e["a_impulse0"])]),
         impulse_block=_block(p, [("out", e["impulse0"])]),
         summary_block=_block(p, _summary0_outputs(e)),

@@ -101,7 +101,7 @@ class Ham0(_HamModel):
     @staticmethod
     def _history_numpy(h0, lam, tau, want):
         """The numpy history, one block of lines at a time (``base.line_blocks``): the generated
-        delta0 (35) clipped to its contact, and the impulse (47) omega0^{-5/2}
+        delta0 (35) on its contact (``delta_contact``), and the impulse (47) omega0^{-5/2}
         K_s(3 beta / (2 omega0), omega0 tau) from the per-rate Chebyshev series of K_s
         (``ham.quadrature.KsSeries``, within 1e-13 of the generated h0.impulse's quadrature,
         tests), its rates contracted once for all blocks."""
@@ -130,8 +130,7 @@ class Ham0(_HamModel):
             t = t2[r0:r1, c0:c1]
             if want & {"delta", "force"}:
                 d = out["delta"][r0:r1, c0:c1]
-                d[...] = h0.delta(t, lines[r0:r1, None])
-                np.maximum(d, 0.0, out=d)
+                d[...] = h0.delta_contact(t, lines[r0:r1, None])  # >= 0, 0 past pi/omega0
                 np.copyto(d, 0.0, where=t >= tau_d[r0:r1, None])
                 f = out["force"][r0:r1, c0:c1]
                 np.sqrt(d, out=f)

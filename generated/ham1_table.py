@@ -5,9 +5,9 @@ the float64 ham1 summary (zener_sym.ham.spectral.summary_numpy); `zener-sym ham1
 --check` rebuilds and compares numerically (the node values come from floating-point root
 finding and quadrature).
 
-Inputs hash: 9e1c6e56fdad431b
+Inputs hash: a4e16e2d61a77f95
 """
-INPUTS_HASH = '9e1c6e56fdad431b'
+INPUTS_HASH = 'a4e16e2d61a77f95'
 #: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)
 LAM_CONT = 2.0304532806603661
 #: (kind, start, end) per lambda piece; kind 'lam': Chebyshev variable lambda,

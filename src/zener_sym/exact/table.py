@@ -357,7 +357,10 @@ def history(lam, tau) -> dict:
     piece += 1
     piece *= t2 > b[3]
     piece = piece.ravel()
-    out = {f: np.empty(tau.shape) for f in ("delta", "impulse", "velocity", "force")}
+    # the four fields in one allocation (as models.base.field_buffers): freed, it raises
+    # glibc's mmap threshold above its own size, so the next history of this size reuses the
+    # memory instead of faulting in 4 x N fresh pages (four separate arrays kept doing that)
+    out = dict(zip(("delta", "impulse", "velocity", "force"), np.empty((4, tau.size))))
     layout = _tables()["history"]
     tl_all = np.polynomial.chebyshev.chebvander(xl, max(
         c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)

@@ -262,7 +262,9 @@ class KsSeries:
             raise ValueError(f"KsSeries: the decay rates must be finite and in [0, {A_SERIES:g}]")
         n = self.n = u.size
         Ta = np.polynomial.chebyshev.chebvander(2.0 * u / A_SERIES - 1.0, N_RATE - 1)
-        c = _ks_pieces() @ Ta.T  # [theta degree, piece, rate]
+        pieces = _ks_pieces()
+        # [theta degree, piece, rate], as one matrix product (a stacked one is 2x slower here)
+        c = (pieces.reshape(-1, N_RATE) @ Ta.T).reshape(*pieces.shape[:2], n)
         # K_s(a, pi) = (pi/2)^{5/2} (G + H) at theta = r = pi/2: G's last piece at x = 1, H's
         # (stored as piece N_PIECES, in -x and with the sign flipped) at x = -1
         alt = (-1.0) ** np.arange(c.shape[0])[:, None]

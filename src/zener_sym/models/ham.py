@@ -16,7 +16,11 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from .base import Model, line_blocks, register
+from .base import Model, field_buffers, line_blocks, register
+
+#: Points per block of ham0's history (about 16 000: each block calls the generated kernels,
+#: whose input checks cost about 25 us a call).
+_BLOCK = 16384
 
 
 def _gen(name):
@@ -125,8 +129,8 @@ class Ham0(_HamModel):
         if want & {"impulse", "velocity"} and np.all(rate <= A_SERIES):
             u, rate_of_line = np.unique(rate, return_inverse=True)
             series = KsSeries(u)
-        out = {f: np.empty(t2.shape) for f in ("delta", "force", "impulse", "velocity")}
-        for r0, r1, c0, c1 in line_blocks(lines.size, n_col):
+        out = field_buffers(("delta", "force", "impulse", "velocity"), t2.shape)
+        for r0, r1, c0, c1 in line_blocks(lines.size, n_col, _BLOCK):
             t = t2[r0:r1, c0:c1]
             if want & {"delta", "force"}:
                 d = out["delta"][r0:r1, c0:c1]

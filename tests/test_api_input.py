@@ -115,3 +115,16 @@ def test_bound_messages_print_the_bound_the_check_uses():
             with pytest.raises(ValueError):
                 zs.summary(bound, model=model)
             zs.summary(np.nextafter(bound, 0), model=model)
+
+
+def test_history_tau_is_its_own_writeable_copy():
+    """History.tau is the api's copy of tau (never the caller's array, whatever the shapes) and
+    writeable after the call, though the model saw it read-only."""
+    tau = np.linspace(0.0, 3.0, 7)
+    for lam in (1.0, np.array([[0.5], [1.5]]), np.full(7, 0.3)):
+        h = zs.history(lam, tau)
+        tau_before = h.tau.copy()
+        tau[:] += 1.0  # the caller changes its array afterwards
+        np.testing.assert_array_equal(h.tau, tau_before)
+        assert h.tau.flags.writeable
+        tau[:] -= 1.0

@@ -233,11 +233,16 @@ def history(lam, tau, model: str = "exact", fields=None, **options) -> History:
             f"lambda of shape {arr.shape} does not broadcast against tau of shape {t.shape}"
         ) from None
     # lambda stays a broadcast view (a column of lambda against a grid of tau is not copied
-    # to the grid's size: models detect it and work per line)
-    values = m.history_values(lam_b, np.ascontiguousarray(tau_b), want, **options)
+    # to the grid's size: models detect it and work per line). tau is the api's own copy
+    # (as_tau converts with a copy), so it is History.tau as well, without a second copy; it
+    # is read-only while the model runs, so a model cannot change it
+    tau_c = np.ascontiguousarray(tau_b) if tau_b.shape != t.shape else t
+    tau_c.flags.writeable = False
+    values = m.history_values(lam_b, tau_c, want, **options)
+    tau_c.flags.writeable = True
     # every field has the broadcast shape, () for scalar lambda and tau
     values = {k: np.asarray(v, dtype=float).reshape(tau_b.shape) for k, v in values.items()}
-    values["tau"] = tau_b.copy()
+    values["tau"] = tau_c.reshape(tau_b.shape)
     _no_silent_nan(values, m)
     skipped = tuple(f for f in m.history_fields if f not in want)
     return History(m, values, scalar=False, skipped=skipped)

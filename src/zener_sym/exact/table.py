@@ -366,23 +366,28 @@ def history(lam, tau) -> dict:
         c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)
     imp_end = 1.0 + v["e"]  # after the contact the impulse keeps its final value
     for n, name in enumerate((*_build.TIME_PIECES, None)):
-        at_all = np.flatnonzero(piece == n)
-        if at_all.size == 0:
-            continue
         if name is not None:
+            if not np.any(piece == n):
+                continue
             per, k, deg, need = layout[name]
             prep = (_scaled_maps(name, k, lu, log, v, tau_s), _piece_coefficients(
                 per, ip, tl_all, deg, k), k, deg, int(need[ip].max()))
-        for s in range(0, at_all.size, _BLOCK):
-            at = at_all[s:s + _BLOCK]
-            li = line.take(at // n_col, mode="clip") if n_col is not None else inv.take(
-                at, mode="clip")
-            if name is None:
-                out["delta"][at] = 0.0
-                out["impulse"][at] = imp_end.take(li, mode="clip")
-            else:
-                out["delta"][at], out["impulse"][at] = _piece_values(
-                    name, prep, tau.take(at, mode="clip"), li, lu)
+        # the piece's points, found chunk by chunk of the grid (no index array of the grid's
+        # size: the call's peak memory decides whether glibc keeps it for the next call)
+        for c0 in range(0, tau.size, 4 * _BLOCK):
+            at_chunk = np.flatnonzero(piece[c0:c0 + 4 * _BLOCK] == n)
+            at_chunk += c0
+            for s in range(0, at_chunk.size, _BLOCK):
+                at = at_chunk[s:s + _BLOCK]
+                li = line.take(at // n_col, mode="clip") if n_col is not None else inv.take(
+                    at, mode="clip")
+                if name is None:
+                    out["delta"][at] = 0.0
+                    out["impulse"][at] = imp_end.take(li, mode="clip")
+                else:
+                    out["delta"][at], out["impulse"][at] = _piece_values(
+                        name, prep, tau.take(at, mode="clip"), li, lu)
+        prep = None  # freed before the next piece's coefficients are made
     for s in range(0, tau.size, _BLOCK):  # the derived fields, block by block (as above)
         d, f = out["delta"][s:s + _BLOCK], out["force"][s:s + _BLOCK]
         np.sqrt(d, out=f)

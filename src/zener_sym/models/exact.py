@@ -52,8 +52,15 @@ class ExactModel(Model):
     def _split(self, lam, options, history=False):
         """Mask of lambda to take from the tables, and the options left for integration.
 
-        The summary and history tables both cover [0, 1000] (``history=True``: the history's)."""
-        in_range = _fast.history_in_range if history else _fast.in_range
+        The summary and history tables both cover [0, 1000] (``history=True``: the history's).
+        A lambda broadcast along its last axis (the api's view of a lambda column against a tau
+        grid) is checked once per line and gets a broadcast mask, not one of the grid's size."""
+        check = _fast.history_in_range if history else _fast.in_range
+        column = lam.ndim >= 1 and lam.shape[-1] > 1 and lam.strides[-1] == 0
+
+        def in_range(x):
+            return np.broadcast_to(check(x[..., :1]), x.shape) if column else check(x)
+
         top = _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
         options = dict(options)
         backend = options.pop("backend", "auto")
@@ -86,7 +93,7 @@ class ExactModel(Model):
                     f"lambda = {bad!r} is outside the exact {'history' if history else 'summary'}"
                     f" table's range [{_fast.LAM_MIN:g}, {top:g}]; use backend='auto' "
                     f"(integrates outside) or 'scipy'")
-            return np.ones(lam.shape, bool), None
+            return np.broadcast_to(True, lam.shape), None
         if backend == "auto":
             if options.keys() & {"rtol", "method"}:
                 backend = "scipy"  # an integrator tolerance was asked for: integrate everything
@@ -94,7 +101,7 @@ class ExactModel(Model):
                 if "dps" in options:
                     raise ValueError("option 'dps' goes with backend='mpmath'")
                 return in_range(lam), ("scipy", options)
-        return np.zeros(lam.shape, bool), (backend, options)
+        return np.broadcast_to(False, lam.shape), (backend, options)
 
     def _solutions(self, lam_values, backend, options):
         options = dict(options)

@@ -7,8 +7,9 @@ Each process computes the 200 lambda x 500 tau history of the issue-14 target ei
 row and prints, per call, the minor page faults (``getrusage``) and the milliseconds. A fresh page
 costs about 1.5 us on the machine these docs were measured on, so whether glibc's allocator keeps
 freed memory (faults drop to 0 after the first calls) or returns it to the system every call
-decides much of a history's time; which of the two a process gets depends on its address-space
-layout (with ``setarch -R``, no randomization, every process kept the memory).
+decides much of a history's time. It keeps it when a call's peak memory stays below its trim
+threshold; when the exact history's peak was 6 MB, two processes in nine (depending on their
+address-space layout) returned it every call (docs/benchmarks.md).
 """
 from __future__ import annotations
 

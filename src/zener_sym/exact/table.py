@@ -267,14 +267,11 @@ def _reduced_time(name, m, k, t, li):
         return np.sqrt(z, out=z), d
     ts = t - m["s"].take(li, mode="clip")
     z = -m["u0"].take(li, mode="clip")
-    if "i1" in m:
-        ts *= m["i1"].take(li, mode="clip") if "i3" not in m else 1.0
-        if "i3" in m:
-            z += ts * m["i3"].take(li, mode="clip")
-            ts *= m["i1"].take(li, mode="clip")
-        z += np.log1p(ts, out=ts)
-    elif "i3" in m:
+    if "i3" in m:  # the linear term first: ts is scaled in place below
         z += ts * m["i3"].take(li, mode="clip")
+    if "i1" in m:
+        ts *= m["i1"].take(li, mode="clip")
+        z += np.log1p(ts, out=ts)
     if "i2" in m:
         te = m["e"].take(li, mode="clip")
         te -= t

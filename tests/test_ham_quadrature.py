@@ -105,3 +105,20 @@ def test_ks_series_blocks_against_the_rule():
     for bad in ([-0.1], [np.nan], [1.01 * A_SERIES]):
         with pytest.raises(ValueError, match="KsSeries"):
             KsSeries(bad)
+
+
+def test_impulse_series_with_more_rates_than_one_group(monkeypatch):
+    """Scattered rates (one per point) beyond the group size are contracted group by group:
+    the same numbers as in one group up to the series' trimming (which depends on the rates at
+    hand), and within the rule's tolerance."""
+    from zener_sym.ham import quadrature as q
+
+    rng = np.random.default_rng(8)
+    a = rng.uniform(0.0, q.A_SERIES, 300)
+    th = rng.uniform(0.0, 3.3, 300)
+    whole = q.impulse_s(a, th)
+    monkeypatch.setattr(q, "_MAX_RATES", 7)
+    grouped = q.impulse_s(a, th)
+    assert np.max(np.abs(grouped - whole)) < 1e-14
+    ref = sqrt_integrals(a[::30], np.minimum(th[::30], np.pi), ("s",))["s"]
+    assert np.max(np.abs(grouped[::30] - ref)) < 2e-14

@@ -300,12 +300,28 @@ class KsSeries:
         return val
 
 
+#: Most rates contracted at once (their rows take 16 pieces x 13 degrees x 8 bytes each): points
+#: with more distinct rates (one lambda per point) are taken in groups of rates.
+_MAX_RATES = 2048
+
+
 def _series_eval(u, th, inv=None, line=None, n_col=None):
     """K_s at phases th for the rates u (all <= A_SERIES), from the series: point i has the rate
     u[inv[i]], or, with ``line``, u[line[i // n_col]] (a rate per line of n_col points, so no
     per-point index array is built). th >= 0; phases past pi give K_s(a, pi)."""
-    series = KsSeries(u)
     out = np.empty(th.shape)
+    if u.size > _MAX_RATES:
+        # points sorted by rate; each group of rates contracted alone (bounded memory)
+        if inv is None:
+            inv = np.repeat(line, n_col)
+        order = np.argsort(inv, kind="stable")
+        bounds = np.searchsorted(inv[order], np.arange(0, u.size + _MAX_RATES, _MAX_RATES))
+        for g, (a, b) in enumerate(zip(bounds[:-1], bounds[1:])):
+            at = order[a:b]
+            out[at] = _series_eval(u[g * _MAX_RATES:(g + 1) * _MAX_RATES], th[at],
+                                   inv=inv[at] - g * _MAX_RATES)
+        return out
+    series = KsSeries(u)
     # blocks of points small enough that the dozen temporaries stay in cache (and below the
     # allocator's mmap threshold): whole-array temporaries cost more than their arithmetic
     for s in range(0, th.size, _BLOCK):

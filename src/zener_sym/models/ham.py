@@ -101,7 +101,6 @@ class Ham0(_HamModel):
                     force[i] = d[i] ** 1.5  # delta0^{3/2} (45), 0 from tau_d on
         return {"delta": d, "force": force, "impulse": imp, "velocity": 1.0 - imp}
 
-
     @staticmethod
     def _history_numpy(h0, lam, tau, want):
         """The numpy history, one block of lines at a time (``base.line_blocks``): the generated
@@ -126,7 +125,9 @@ class Ham0(_HamModel):
         rate = 1.5 * beta / omega0
         scale = omega0 ** -2.5
         series = None
-        if want & {"impulse", "velocity"} and np.all(rate <= A_SERIES):
+        # lines of several points: the series of their rates once for all blocks; one lambda
+        # per point goes through impulse_s, which takes many distinct rates in groups
+        if want & {"impulse", "velocity"} and column and np.all(rate <= A_SERIES):
             u, rate_of_line = np.unique(rate, return_inverse=True)
             series = KsSeries(u)
         out = field_buffers(("delta", "force", "impulse", "velocity"), t2.shape)
@@ -146,7 +147,8 @@ class Ham0(_HamModel):
                 np.multiply(k.reshape(t.shape), scale[r0:r1, None], out=imp)
                 np.subtract(1.0, imp, out=out["velocity"][r0:r1, c0:c1])
         if want & {"impulse", "velocity"} and series is None:
-            # a rate beyond the series' range (lambda near lam_crit): K_s by quadrature
+            # one lambda per point, or a rate beyond the series' range (lambda near lam_crit,
+            # where impulse_s uses the quadrature)
             out["impulse"] = impulse_s(rate[:, None], t2 * omega0[:, None]) * scale[:, None]
             out["velocity"] = 1.0 - out["impulse"]
         groups = [g for g in (("delta", "force"), ("impulse", "velocity")) if want & set(g)]

@@ -26,7 +26,7 @@ LAYERS = (
     ("derivation", ("zener_sym.derivation",)),
     ("codegen", ("zener_sym.codegen",)),
     ("leaf helpers", ("zener_sym.params", "zener_sym.ham.quadrature", "zener_sym.ham.chebyshev",
-                      "zener_sym.ham.mp")),
+                      "zener_sym.ham.mp", "zener_sym.blocks")),
     ("generated", ("zener_sym.generated",)),
     ("numerics", ("zener_sym.exact", "zener_sym.ham")),
     ("models", ("zener_sym.models",)),

@@ -122,7 +122,7 @@ def test_ham0_series_impulse_matches_the_generated_kernel():
 
 
 def test_line_blocks_cover_the_grid_once():
-    from zener_sym.models.base import line_blocks
+    from zener_sym.blocks import line_blocks
 
     for n_lines, n_col, size in ((7, 3, 8), (3, 20, 8), (1, 1, 8), (5, 8, 8)):
         hits = np.zeros((n_lines, n_col), dtype=int)

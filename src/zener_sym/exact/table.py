@@ -24,6 +24,7 @@ import importlib
 
 import numpy as np
 
+from ..blocks import BLOCK, field_buffers
 from ..ham.chebyshev import horner_take_pair
 from . import solver as _solver
 from . import table_build as _build
@@ -39,9 +40,9 @@ HISTORY_LAM_MAX = float(_build.HISTORY_TO)
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
 HISTORY_ATOL = 1e-10
-#: Points per block of the history evaluation (8192: a block's float temporaries, 64 kB each,
-#: stay in cache and below the allocator's mmap threshold).
-_BLOCK = 8192
+#: Points per block of the history evaluation (``blocks.BLOCK``: a block's float temporaries,
+#: 64 kB each, stay in cache and below the allocator's mmap threshold).
+_BLOCK = BLOCK
 
 
 def _stack_summary(mats) -> np.ndarray:
@@ -253,7 +254,7 @@ def _scaled_maps(name, k, lu, log, v, tau_s):
     return out
 
 
-def _reduced_time(name, m, k, t, li):
+def _reduced_time(name, m, t, li):
     """z = k y, the reduced time of piece ``name`` times its sub-piece count, at times t on the
     lines li (``_scaled_maps``' constants gathered per point), and d = tau_d on the lines (piece
     B's factor, None elsewhere)."""
@@ -283,8 +284,8 @@ def _reduced_time(name, m, k, t, li):
 
 def _piece_values(name, prep, t, li, lu):
     """delta and the impulse at times t (all in time piece ``name``) on the lines li."""
-    m, cT, k, deg, nd = prep
-    z, d = _reduced_time(name, m, k, t, li)
+    m, cT, k, nd = prep
+    z, d = _reduced_time(name, m, t, li)
     sub = z.astype(np.intp)  # z >= 0: truncation is floor
     if sub.min() < 0:  # a NaN or a point outside its piece: never index a wrong row
         raise RuntimeError(f"exact history table: reduced time out of range in piece "
@@ -354,10 +355,7 @@ def history(lam, tau) -> dict:
     piece += 1
     piece *= t2 > b[3]
     piece = piece.ravel()
-    # the four fields in one allocation (as models.base.field_buffers): freed, it raises
-    # glibc's mmap threshold above its own size, so the next history of this size reuses the
-    # memory instead of faulting in 4 x N fresh pages (four separate arrays kept doing that)
-    out = dict(zip(("delta", "impulse", "velocity", "force"), np.empty((4, tau.size))))
+    out = field_buffers(("delta", "impulse", "velocity", "force"), tau.shape)
     layout = _tables()["history"]
     tl_all = np.polynomial.chebyshev.chebvander(xl, max(
         c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)
@@ -368,7 +366,7 @@ def history(lam, tau) -> dict:
                 continue
             per, k, deg, need = layout[name]
             prep = (_scaled_maps(name, k, lu, log, v, tau_s), _piece_coefficients(
-                per, ip, tl_all, deg, k), k, deg, int(need[ip].max()))
+                per, ip, tl_all, deg, k), k, int(need[ip].max()))
         # the piece's points, found chunk by chunk of the grid (no index array of the grid's
         # size: the call's peak memory decides whether glibc keeps it for the next call)
         for c0 in range(0, tau.size, 4 * _BLOCK):

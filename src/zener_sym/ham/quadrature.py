@@ -37,6 +37,7 @@ import functools
 import numpy as np
 from scipy.special import roots_jacobi
 
+from ..blocks import BLOCK
 from .chebyshev import horner_take
 
 __all__ = ["K_FUNCS", "sqrt_integrals", "N_NODES", "CUT"]
@@ -164,7 +165,7 @@ N_RATE = 36
 A_SERIES = 10.0
 _WIDTH = np.pi / 2.0 / N_PIECES
 #: Points per block in the series evaluation.
-_BLOCK = 8192
+_BLOCK = BLOCK
 
 
 def _cheb_points(n):

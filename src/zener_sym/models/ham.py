@@ -16,7 +16,8 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from .base import Model, field_buffers, line_blocks, register
+from ..blocks import field_buffers, line_blocks
+from .base import Model, register
 
 #: Points per block of ham0's history (about 16 000: each block calls the generated kernels,
 #: whose input checks cost about 25 us a call).
@@ -103,7 +104,7 @@ class Ham0(_HamModel):
 
     @staticmethod
     def _history_numpy(h0, lam, tau, want):
-        """The numpy history, one block of lines at a time (``base.line_blocks``): the generated
+        """The numpy history, one block of lines at a time (``blocks.line_blocks``): the generated
         delta0 (35) on its contact (``delta_contact``), and the impulse (47) omega0^{-5/2}
         K_s(3 beta / (2 omega0), omega0 tau) from the per-rate Chebyshev series of K_s
         (``ham.quadrature.KsSeries``, within 1e-13 of the generated h0.impulse's quadrature,

@@ -337,7 +337,6 @@ def summary(lam):
 
 def _np_prelude(e, lam_crit, desc, extra_sources=()):
     p = _NumpyPrinter()
-    b = Y["beta"]
     return header(_SOURCES + tuple(extra_sources), desc) + _NP_PRELUDE.format(
         lam_crit_float=repr(float(lam_crit)), lam_crit_str=str(lam_crit),
         lam_crit_eq=str(e["lam_crit_eq"]),

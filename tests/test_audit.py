@@ -9,9 +9,9 @@ import pytest
 
 import zener_sym as zs
 from zener_sym import cli
-from zener_sym.audit import claims, derived, printed
+from zener_sym.audit import checks, derived, printed, reference, registry
 from zener_sym.audit.run import audit_item
-from zener_sym.audit.verdicts import VERDICTS, compare, dimension, rounds_to
+from zener_sym.audit.verdicts import VERDICTS, Verdict, compare, dimension, rounds_to
 
 
 def _mutated(monkeypatch, item_id, new_parse):
@@ -98,11 +98,11 @@ def test_compare_and_rounding_can_fail():
     assert dimension(S["m1"] * S["V0"] - S["W"]) is None  # momentum minus energy
 
 
-def test_delta_m_compression_only_matches_exact_solver():
+def test_delta_m_compression_only_matches_exact_tables():
     for lv in (0.0, 0.7, 3.0):
-        assert claims.delta_m_exact(lv) == pytest.approx(zs.summary(lv).delta_m, rel=1e-9)
+        assert reference.delta_m_exact(lv) == pytest.approx(zs.summary(lv).delta_m, rel=1e-9)
     # lambda = 0: Hertz's closed form (5/4)^(2/5), an independent value
-    assert claims.delta_m_exact(0.0) == pytest.approx(1.25**0.4, rel=1e-10)
+    assert reference.delta_m_exact(0.0) == pytest.approx(1.25**0.4, rel=1e-10)
 
 
 @pytest.mark.slow
@@ -156,3 +156,76 @@ def test_eq24_claim_is_the_maximum_of_an_independent_scan():
     assert rel(at) == pytest.approx(err, abs=5e-6)  # the evidence prints 3 decimals of a percent
     for x in (at - 0.3, at + 0.3, 0.5, 10.0, 100.0):
         assert rel(x) <= err + 5e-6
+
+
+# Eq. (50): F-bar = (sin(omega0 tau)/omega0)^(3/2) at lambda = 0, printed as a sin^e(b tau) with
+# rounded a = omega0^(-3/2) and b = omega0. Each printed part decides the verdict.
+EQ50_FIXED = "0.967*sin(1.023*tau)**Rational(3,2)"
+
+
+@pytest.mark.parametrize("parse, verdict", [
+    (EQ50_FIXED, "consistent"),                              # power and both constants right
+    ("0.957*sin(1.023*tau)**Rational(3,2)", "typo"),         # amplitude off by 10 units
+    ("0.966*sin(1.023*tau)**Rational(3,2)", "typo"),         # the printed 0.966: 1.1 units off
+    ("0.967*sin(1.033*tau)**Rational(3,2)", "typo"),         # frequency off
+    ("0.967*sin(1.023*tau)**Rational(3,5)", "typo"),         # the printed power
+])
+def test_eq50_each_printed_part_decides(monkeypatch, parse, verdict):
+    assert _mutated(monkeypatch, "50", parse).verdict == verdict
+
+
+def test_eq50_constant_reaches_the_verdict_and_note():
+    r = audit_item(printed.by_id("50"))
+    assert r.verdict == "typo"
+    # (5/4)^(-3/20) = 0.96708..., so the printed 0.966 does not round from it; 1.023^(-3/2) does
+    assert round(1.25 ** -0.15, 4) == 0.9671 and round(1.023 ** -1.5, 3) == 0.966
+    assert "the constant is 0.9671" in r.note and "power is 3/2, not 3/5" in r.note
+
+
+def test_eq50_derived_value_perturbed_flips_the_verdict(monkeypatch):
+    import sympy as sp
+
+    # the fixed printed form against a derived omega0 0.5% off: both constants stop rounding
+    fixed = _mutated(monkeypatch, "50", EQ50_FIXED)
+    assert fixed.verdict == "consistent"
+    real = derived.get
+
+    def shifted(name, **kw):
+        expr, src = real(name, **kw)
+        return (expr * sp.Rational(201, 200), src) if name == "omega0_lam0" else (expr, src)
+
+    monkeypatch.setattr(derived, "get", shifted)
+    assert _mutated(monkeypatch, "50", EQ50_FIXED).verdict == "typo"
+
+
+@pytest.mark.parametrize("parse, verdict", [
+    ("(1.467*sin(1.023*tau) + C11(tau)*sin(1.023*tau) + C12(tau)*cos(1.023*tau))**Rational(3,2)",
+     "consistent"),
+    ("(1.477*sin(1.023*tau) + C11(tau)*sin(1.023*tau) + C12(tau)*cos(1.023*tau))**Rational(3,2)",
+     "typo"),  # 3/(2 omega0) = 1.46690: the constant is read from the transcription
+])
+def test_eq51_constant_read_from_the_transcription(monkeypatch, parse, verdict):
+    assert _mutated(monkeypatch, "51", parse).verdict == verdict
+
+
+def test_every_item_has_one_check_and_checks_return_verdicts():
+    assert {it.id for it in printed.ITEMS} == set(checks.CHECKS)
+    with pytest.raises(ValueError, match="two checks"):
+        registry.check("50")(lambda item_id: None)
+    r = checks.CHECKS["13"]("13")
+    assert isinstance(r, Verdict) and r.verdict == "consistent"
+
+
+def test_audit_modules_are_small_and_import_no_private_names():
+    import ast
+    import pathlib
+
+    folder = pathlib.Path(checks.__file__).parent
+    for path in folder.glob("*.py"):
+        text = path.read_text()
+        if path.name not in ("_raw.py", "printed.py"):  # the transcription of the paper
+            assert text.count("\n") <= 400, path.name
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, ast.ImportFrom):
+                private = [a.name for a in node.names if a.name.startswith("_") and a.name != "__future__"]
+                assert not private, f"{path.name} imports {private} from {node.module}"

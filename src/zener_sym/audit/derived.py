@@ -120,7 +120,6 @@ def _scaling() -> dict:
     """Nondimensionalise Eq. (7) with (8): delta = T V0 dbar, t = T tau (Eq. 9)."""
     s = SYM
     ms, Es, R, V0, alpha, T = s["ms"], s["Es"], s["R"], s["V0"], s["alpha"], s["T"]
-    db = sp.Symbol("db", positive=True)
     # (7) divided by V0/T: dbar'' + (T/(m V0)) F + (alpha/ V0) dF/dtau ... with F = (4/3)Es sqrt(R) delta^(3/2)
     coeff = (T / V0) * sp.Rational(4, 3) * Es * sp.sqrt(R) * (T * V0) ** sp.Rational(3, 2) / ms
     T_sol = [r for r in sp.solve(sp.Eq(coeff, 1), T) if r.is_positive is not False][0]
@@ -144,7 +143,6 @@ def _scaling() -> dict:
     out["chi"] = sp.simplify(2 * out["lam_phys_Es"] / ((R / H) ** 2 * V0 ** sp.Rational(1, 5)))
     out["w_scale"] = sp.simplify(alpha * out["I_scale"])
     out["delta_scale"] = sp.simplify(T_sol * V0)
-    del db
     return out
 
 

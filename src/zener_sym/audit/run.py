@@ -4,11 +4,12 @@ from __future__ import annotations
 import re
 import time
 
-from . import checks, claims, derived
+from . import derived
+from .checks import CHECKS
 from .printed import ITEMS, Printed, parse
 from .texts import tex
 from .titles import TITLES
-from .verdicts import VERDICTS, Result
+from .verdicts import VERDICTS, Result, Verdict
 
 __all__ = ["audit_item", "run_audit", "summary_line", "TEXT_DERIVED"]
 
@@ -58,14 +59,7 @@ def _derived_text(item: Printed, der: str) -> str:
 
 def audit_item(item: Printed) -> Result:
     """The verdict for one printed item (never raises: an error is reported as not-checkable)."""
-    if item.kind == "claim":
-        fn = claims.CLAIMS.get(item.id)
-    elif item.id in ("55", "70"):
-        fn = lambda: claims._fit_claim(item.id)  # noqa: E731 (fits are checked as claims)
-    elif item.parse is None and item.id not in checks.CHECKS:
-        fn = None
-    else:
-        fn = checks.CHECKS.get(item.id)
+    fn = CHECKS.get(item.id)
     if item.parse is None and item.kind != "claim" and fn is None:
         return Result(item.id, item.kind, "garbled", item.raw, "", "The transcription cannot be "
                       "read as a formula.", "")
@@ -75,15 +69,15 @@ def audit_item(item: Printed) -> Result:
     try:
         if item.parse is not None:
             parse(item)  # a transcription that does not parse is a bug in printed.py
-        verdict, der, evidence, note = fn()
+        verdict = fn(item.id)
     except derived.NotAvailable as exc:
-        verdict, der, evidence, note = "not-checkable", "", str(exc), ""
+        verdict = Verdict("not-checkable", "", str(exc))
     except Exception as exc:  # a failing check must not hide the others
-        verdict, der, evidence, note = ("not-checkable", "", f"The check failed: {type(exc).__name__}: "
-                                        f"{exc}", "audit bug: please report")
+        verdict = Verdict("not-checkable", "", f"The check failed: {type(exc).__name__}: {exc}",
+                          "audit bug: please report")
     # the item's ``reads`` is shown through its title and form (titles.py), not repeated here
-    return Result(item.id, item.kind, verdict, _printed_text(item), _derived_text(item, der),
-                  evidence, note)
+    return Result(item.id, item.kind, verdict.verdict, _printed_text(item),
+                  _derived_text(item, verdict.derived), verdict.evidence, verdict.note)
 
 
 def run_audit(ids=None) -> list[Result]:

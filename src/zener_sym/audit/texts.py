@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from zener_sym.derivation.printing import NAMES, mathtext_safe, paper_latex
+from zener_sym.derivation.printing import mathtext_safe, paper_latex
 
-__all__ = ["tex", "m", "mm", "dim_tex", "sym_tex", "PLACEHOLDERS", "num"]
+__all__ = ["tex", "dim_tex", "PLACEHOLDERS", "num"]
 
 _DB = r"\bar\delta"
 _I_BAR = r"\bar I"
@@ -50,21 +50,6 @@ def tex(expr, item_id: str | None = None, literal: bool = False) -> str:
         return paper_latex(sp.sympify(expr), names=names, functions=functions, literal=literal)
     except Exception:  # an odd (mutated) transcription must never cost a verdict
         return mathtext_safe(sp.latex(expr))
-
-
-def m(expr, item_id: str | None = None) -> str:
-    """Inline math: ``$...$``."""
-    return f"${tex(expr, item_id)}$"
-
-
-def mm(latex: str) -> str:
-    """Inline math from a LaTeX string."""
-    return f"${latex}$"
-
-
-def sym_tex(name: str) -> str:
-    """The LaTeX of a code symbol name (``lam`` -> ``\\lambda``)."""
-    return NAMES.get(name, name)
 
 
 _DIM_NAMES = {"M": r"\mathrm{M}", "L": r"\mathrm{L}", "Ts": r"\mathrm{T}"}

@@ -9,14 +9,15 @@ from __future__ import annotations
 
 import random
 from dataclasses import asdict, dataclass
+from typing import NamedTuple
 
 import mpmath as mp
 import sympy as sp
 
 from .printed import SYM
 
-__all__ = ["Result", "VERDICTS", "compare", "equal_up_to_factor", "dimension", "rounds_to",
-           "DIMS", "sample_point"]
+__all__ = ["Result", "Verdict", "VERDICTS", "compare", "equal_up_to_factor", "dimension", "rounds_to",
+           "DIMS", "MASS", "LENGTH", "TIME", "sample_point", "sci"]
 
 VERDICTS = ("consistent", "typo", "garbled", "claim-holds", "claim-fails", "not-checkable")
 
@@ -39,6 +40,27 @@ class Result:
 
     def as_dict(self) -> dict:
         return asdict(self)
+
+
+class Verdict(NamedTuple):
+    """What a check returns: the verdict (one of :data:`VERDICTS`), the derived form as LaTeX
+    (empty when there is none), the evidence in sentences and a one-line note for the summary."""
+
+    verdict: str
+    derived: str = ""
+    evidence: str = ""
+    note: str = ""
+
+    @classmethod
+    def form(cls, ok: bool, derived: str, evidence: str, note_bad: str = "",
+             note_ok: str = "") -> "Verdict":
+        """A printed form's verdict: ``consistent`` when ``ok``, else ``typo`` with ``note_bad``."""
+        return cls("consistent" if ok else "typo", derived, evidence, note_ok if ok else note_bad)
+
+    @classmethod
+    def claim(cls, holds: bool, derived: str, evidence: str, note: str = "") -> "Verdict":
+        """A numeric claim's verdict: ``claim-holds`` or ``claim-fails``."""
+        return cls("claim-holds" if holds else "claim-fails", derived, evidence, note)
 
 
 # Sampling ranges: physical ranges of each symbol, so that square roots stay real
@@ -109,10 +131,10 @@ def compare(printed, derived, n_points: int = 6, seed: int = 12345, rtol: float 
             worst, where = err, (pt, a, b)
     if worst <= rtol:
         return True, (f"30-digit values agree at {n_points} random points (largest relative "
-                      f"difference {_sci(worst)})")
+                      f"difference {sci(worst)})")
     pt, a, b = where
     return False, (f"at {_at(pt)} the printed form gives {_fmt(a)} and the derived one {_fmt(b)} "
-                   f"(relative difference {_sci(worst)})")
+                   f"(relative difference {sci(worst)})")
 
 
 def equal_up_to_factor(printed, derived, n_points: int = 6, seed: int = 7, rtol: float = 1e-20):
@@ -131,10 +153,10 @@ def equal_up_to_factor(printed, derived, n_points: int = 6, seed: int = 7, rtol:
     spread = max(abs(r - c) for r in ratios) / max(abs(c), 1e-300)
     if abs(c) > 0 and spread <= rtol:
         return True, (f"the printed residual is {_fmt(c)} times the derived one at {n_points} "
-                      f"random points with test functions (spread {_sci(spread)})")
+                      f"random points with test functions (spread {sci(spread)})")
     return False, (f"the ratio of the printed to the derived residual varies between "
                    f"{_fmt(ratios[0])} and {_fmt(ratios[-1])} at random points (spread "
-                   f"{_sci(spread)}), so the two equations differ")
+                   f"{sci(spread)}), so the two equations differ")
 
 
 def _fmt(z) -> str:
@@ -145,7 +167,7 @@ def _fmt(z) -> str:
     return f"{z.real:.6g} {sign} {abs(z.imag):.6g}i"
 
 
-def _sci(x) -> str:
+def sci(x) -> str:
     """A small number for a reader: 3.2e-25 -> $3.2 \\times 10^{-25}$, 0.221 -> 0.221."""
     x = float(x)
     if x == 0:
@@ -163,13 +185,13 @@ def _at(pt) -> str:
 
 
 # ---- units: each physical symbol as a monomial in the base dimensions M, L, Ts -----------------
-_M, _L, _Ts = sp.symbols("M L Ts", positive=True)
-_P = _M / (_L * _Ts**2)  # pressure, modulus
-DIMS = {"m1": _M, "mh": _M, "m2": _M, "ms": _M, "Es": _P, "E1": _P, "E2": _P,
-        "rho1": _M / _L**3, "rho2": _M / _L**3, "R": _L, "H": _L, "V0": _L / _Ts, "V": _L / _Ts,
-        "V_W": _L / _Ts, "t": _Ts, "T": _Ts, "alpha": _Ts / _M, "I": _M * _L / _Ts,
-        "F": _M * _L / _Ts**2, "W": _M * _L**2 / _Ts**2, "w": _L, "dm": _L,
-        "kc": 1 / (_L**2 * _Ts**2)}
+MASS, LENGTH, TIME = sp.symbols("M L Ts", positive=True)
+_P = MASS / (LENGTH * TIME**2)  # pressure, modulus
+DIMS = {"m1": MASS, "mh": MASS, "m2": MASS, "ms": MASS, "Es": _P, "E1": _P, "E2": _P,
+        "rho1": MASS / LENGTH**3, "rho2": MASS / LENGTH**3, "R": LENGTH, "H": LENGTH,
+        "V0": LENGTH / TIME, "V": LENGTH / TIME, "V_W": LENGTH / TIME, "t": TIME, "T": TIME,
+        "alpha": TIME / MASS, "I": MASS * LENGTH / TIME, "F": MASS * LENGTH / TIME**2,
+        "W": MASS * LENGTH**2 / TIME**2, "w": LENGTH, "dm": LENGTH, "kc": 1 / (LENGTH**2 * TIME**2)}
 #: Dimensionless symbols get a generic number, so that 1 - nu**2 does not vanish.
 _DIMLESS = {"nu1": sp.Rational(2, 7), "nu2": sp.Rational(3, 11)}
 
@@ -196,15 +218,15 @@ def dimension(expr, extra: dict | None = None):
     e = e.replace(lambda a: isinstance(a, sp.Derivative),
                   lambda a: a.expr / sp.Mul(*[v**n for v, n in a.variable_count]))
     for f in e.atoms(sp.core.function.AppliedUndef):  # delta(t) has dimension L, F(t) a force
-        e = e.subs(f, _M * _L / _Ts**2 if f.func.__name__ == "Ff" else _L)
+        e = e.subs(f, MASS * LENGTH / TIME**2 if f.func.__name__ == "Ff" else LENGTH)
     e = e.subs(dims)
     e = sp.powsimp(sp.powdenest(sp.factor(sp.simplify(e)), force=True), force=True)
     mono = sp.Integer(1)
     for fac in sp.Mul.make_args(e):
         base, ex = fac.as_base_exp()
-        if base in (_M, _L, _Ts):
+        if base in (MASS, LENGTH, TIME):
             mono *= fac
-        elif fac.free_symbols & {_M, _L, _Ts}:
+        elif fac.free_symbols & {MASS, LENGTH, TIME}:
             return None
     return mono
 

@@ -6,8 +6,10 @@
     'typo'
 
 Modules: ``printed`` (the transcriptions, data only), ``derived`` (registry access and the audit's
-own short derivations), ``verdicts`` (comparison machinery), ``checks`` (one check per equation or
-definition), ``claims`` (numeric claims against the exact ODE), ``run``, ``cli``.
+own short derivations), ``verdicts`` (comparison machinery, ``Verdict``), ``registry`` (``@check``),
+the topics ``forms_core``, ``forms_zeroth``, ``forms_first_order``, ``constants``, ``units``,
+``claims``, ``claims_literature`` (with ``reference``), ``checks`` (all of them), ``run``,
+``markdown`` (AUDIT.md); docs/audit.md has the table.
 """
 from .run import audit_item, run_audit, summary_line
 

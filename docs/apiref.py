@@ -6,6 +6,7 @@ the whole public namespace, whatever the groups say. The page is a build product
 """
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 #: section title -> (intro, names of ``zener_sym.__all__``)
@@ -47,6 +48,21 @@ GENERATED = ["ham0_numpy", "ham1_numpy", "ham0_mpmath", "ham1_mpmath"]
 _SKIP = {"__version__"}  # shown in the page text rather than as an object
 
 
+def _data_doc(name: str, obj) -> str | None:
+    """One-line description of an exported constant (autosummary would show its type's
+    docstring: a tuple's or a dict's), read off the object at build time; None: not data."""
+    if name == "MODELS":
+        return ("Names of the registered models, a tuple read from the registry when asked "
+                f"(so plug-ins show up): ``{', '.join(obj)}``.")
+    if type(obj).__name__ == "Material":
+        return (f"Preset :class:`~zener_sym.Material` ``{obj.name!r}``: E = {obj.E:.4g} Pa, "
+                f"nu = {obj.nu:g}, rho = {obj.rho:g} kg/m^3. Source: {obj.source}.")
+    if name == "PRESETS":
+        return ("Preset materials by name (the command line's ``--sphere``/``--plate`` "
+                f"choices): ``{', '.join(obj)}``.")
+    return None
+
+
 def _rule(title: str, ch: str) -> str:
     return f"{title}\n{ch * len(title)}\n"
 
@@ -67,9 +83,15 @@ def render(package) -> str:
         names = [n for n in names if n in public]
         if not names:
             continue
-        out += [_rule(title, "-"), intro + "\n", ".. autosummary::", "   :toctree: generated",
-                "   :nosignatures:", ""]
-        out += [f"   {n}" for n in names] + [""]
+        data = {n: _data_doc(n, getattr(package, n)) for n in names}
+        objects = [n for n in names if data[n] is None]
+        out += [_rule(title, "-"), intro + "\n"]
+        if objects:
+            out += [".. autosummary::", "   :toctree: generated", "   :nosignatures:", ""]
+            out += [f"   {n}" for n in objects] + [""]
+        for n in names:
+            if data[n] is not None:
+                out += [f".. data:: {n}", "", f"   {data[n]}", ""]
     for mod, (title, intro) in MODULES.items():
         out += [_rule(title, "-"), intro + "\n", f".. automodule:: {mod}", "   :no-members:", "",
                 f".. currentmodule:: {mod}", "", ".. autosummary::", "   :toctree: generated",
@@ -87,11 +109,16 @@ def render(package) -> str:
 
 
 def write(folder: Path, package) -> Path:
-    """Write ``index.rst`` into ``folder`` (only when its text changed, so rebuilds stay
-    incremental); returns the path."""
+    """Write ``index.rst`` into ``folder``; returns the path.
+
+    When the page changed, the object pages autosummary wrote for the old one
+    (``folder/generated``) are removed first: autosummary never deletes a stub, and a stale one
+    (a name dropped from ``__all__``) would be a page outside every toctree.
+    """
     folder.mkdir(exist_ok=True)
     path = folder / "index.rst"
     text = render(package)
     if not path.exists() or path.read_text() != text:
+        shutil.rmtree(folder / "generated", ignore_errors=True)
         path.write_text(text)
     return path

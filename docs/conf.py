@@ -22,7 +22,7 @@ import zener_sym
 DOCS = Path(__file__).resolve().parent
 ROOT = DOCS.parent
 os.environ.setdefault("MPLBACKEND", "Agg")  # the gallery draws into files, never a window
-sys.path.insert(0, str(DOCS))  # apiref.py below
+sys.path.insert(0, str(DOCS))  # apiref.py, gallery_order.py
 
 import apiref  # noqa: E402  (needs DOCS on sys.path)
 
@@ -118,7 +118,7 @@ sphinx_gallery_conf = {
     "filename_pattern": r"[\\/]plot_",
     # only the top level of examples/: examples/c/ holds the C kernels' examples, not gallery scripts
     "ignore_pattern": r"[\\/]c[\\/]|__init__\.py",
-    "within_subsection_order": "FileNameSortKey",
+    "within_subsection_order": "gallery_order.key",
     "download_all_examples": False,
     "image_scrapers": ("matplotlib",),
     "reset_modules": ("matplotlib",),

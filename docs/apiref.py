@@ -102,10 +102,16 @@ def render(package) -> str:
             "Emitted from the SymPy derivation by ``zener-sym generate`` (do not edit; "
             "``zener-sym generate --check`` fails when stale). The models call them; they are "
             "public for users who want the bare closed forms.\n",
-            ".. currentmodule:: zener_sym", "",
-            ".. autosummary::", "   :toctree: generated", "   :template: module_members.rst", ""]
-    out += [f"   generated.{m}" for m in GENERATED] + [""]
+            ".. toctree::", "   :maxdepth: 1", ""]
+    out += [f"   kernels/{m}" for m in GENERATED] + [""]
     return "\n".join(out)
+
+
+def kernel_page(module: str) -> str:
+    """The reST page of one generated kernel module: its docstring and public members."""
+    full = f"zener_sym.generated.{module}"
+    return "\n".join([_rule(f"``{full}``", "="), f".. automodule:: {full}", "   :members:", ""])
+
 
 
 def write(folder: Path, package) -> Path:
@@ -121,4 +127,9 @@ def write(folder: Path, package) -> Path:
     if not path.exists() or path.read_text() != text:
         shutil.rmtree(folder / "generated", ignore_errors=True)
         path.write_text(text)
+    (folder / "kernels").mkdir(exist_ok=True)
+    for module in GENERATED:
+        page = folder / "kernels" / f"{module}.rst"
+        if not page.exists() or page.read_text() != kernel_page(module):
+            page.write_text(kernel_page(module))
     return path

@@ -145,5 +145,7 @@ html_theme_options = {
     "footer_end": ["sphinx-version", "theme-version"],
 }
 html_context = {"default_mode": "light"}
+# pages without sub-pages: no empty "Section Navigation" column beside them
+html_sidebars = {"index": [], "getting_started": [], "changelog": [], "citing": []}
 copybutton_prompt_text = r">>> |\.\.\. |\$ "
 copybutton_prompt_is_regexp = True

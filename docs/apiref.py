@@ -110,7 +110,7 @@ def render(package) -> str:
 def kernel_page(module: str) -> str:
     """The reST page of one generated kernel module: its docstring and public members."""
     full = f"zener_sym.generated.{module}"
-    return "\n".join([_rule(f"``{full}``", "="), f".. automodule:: {full}", "   :members:", ""])
+    return "\n".join([_rule(full, "="), f".. automodule:: {full}", "   :members:", ""])
 
 
 

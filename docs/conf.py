@@ -51,6 +51,9 @@ exclude_patterns = ["_build", "benchmarks", "data", "figures", "auto_examples/*.
                     "auto_examples/*.py", "auto_examples/*.zip", "auto_examples/*.json",
                     "auto_examples/*.md5", "**/sg_execution_times.rst"]
 nitpicky = False
+# Docstrings write code in single backticks (`zener-sym generate --check`); reST's default role
+# would set it in italics and turn "--" into a dash.
+default_role = "literal"
 
 # --- MyST: the existing markdown pages -------------------------------------------------------
 myst_enable_extensions = ["dollarmath", "colon_fence", "deflist"]

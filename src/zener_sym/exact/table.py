@@ -30,7 +30,7 @@ from . import solver as _solver
 from . import table_build as _build
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
-           "history_in_range", "summary", "history"]
+           "history_in_range", "summary", "summary_derivative", "DERIVATIVE_FIELDS", "history"]
 
 LAM_MIN = float(_build.LAM_PIECES[0])
 LAM_MAX = float(_build.LAM_PIECES[-1])
@@ -211,6 +211,133 @@ def summary(lam) -> dict:
             "tau_dr": tau_dr, "eta": tau_dr / v["tau_dc"], "e": v["e"],
             "F_m": v["delta_m"] ** 1.5, "impulse": 1.0 + v["e"], "int_F2": v["int_F2"],
             "xi": 2.0 * lam * v["int_F2"]}
+
+
+#: Summary fields :func:`summary_derivative` differentiates.
+DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
+                     "int_F2", "xi")
+
+
+@functools.cache
+def _derivative_coefficients() -> np.ndarray:
+    """d/dx of every stored summary series, [lambda piece, field, degree] (``chebder``: exact
+    on the stored coefficients, no new rounding beyond the recurrence's)."""
+    c = _tables()["summary"]
+    return np.polynomial.chebyshev.chebder(c, axis=2) if c.shape[2] > 1 else np.zeros_like(c)
+
+
+def _series_sum(tl, ci):
+    """sum_k tl[:, k] ci[:, :, k] in a fixed order (as ``_core``)."""
+    vals = tl[:, :1] * ci[:, :, 0]
+    for k in range(1, min(tl.shape[1], ci.shape[2])):
+        vals += tl[:, k:k + 1] * ci[:, :, k]
+    return vals
+
+
+def summary_derivative(lam, field: str = "e", contact_end: str = "delta") -> np.ndarray:
+    """d(field)/d(lambda) of the tabulated summary, from the Chebyshev series themselves.
+
+    Each stored series is differentiated term by term (``chebder``) and the chain rule applied
+    through the piece's map (x linear in lambda, or in ln lambda above ``LOG_FROM``: dx/dlambda
+    = 2 / ((b - a) lambda)) and through the stored transform (tau_d = exp(log_tau_d); e as
+    :func:`summary` forms it: e = sqrt(1 - xi) while xi = 2 lambda int_F2 < 1/2, else
+    exp(log_e); xi' = -2 e e' where xi >= 1/2, since there 2 int_F2 + 2 lambda int_F2' cancels).
+    No finite differences. Measured against Richardson-extrapolated central differences of
+    mpmath solves and against the small-lambda series (tests/test_exact_inverse.py): about
+    1e-11 relative.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        lambda in [LAM_MIN, LAM_MAX] (Eq. 11).
+    field : str
+        One of ``DERIVATIVE_FIELDS`` (Eqs. 23-24, 61, 69, 76 for their definitions).
+    contact_end : str
+        ``"delta"`` (the plate end of contact).
+
+    Returns
+    -------
+    numpy.ndarray
+        d(field)/d(lambda), float array of lambda's shape.
+
+    Raises
+    ------
+    ValueError
+        For an unknown field or contact end, or lambda outside [LAM_MIN, LAM_MAX] or not finite.
+    """
+    if contact_end != "delta":
+        raise ValueError(f"contact_end {contact_end!r}: only 'delta' (the plate) has tables here")
+    if not isinstance(field, str) or field not in DERIVATIVE_FIELDS:
+        raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
+                         f"{', '.join(DERIVATIVE_FIELDS)}")
+    lam_in = np.asarray(lam, dtype=float)
+    lam = lam_in.reshape(-1)
+    if not np.all(np.isfinite(lam)):
+        raise ValueError("lambda must be finite")
+    v, i, x = _core(lam)
+    t = _tables()
+    d = _derivative_coefficients()
+    tl = np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0))
+    dx = dict(zip(t["summary_keys"], _series_sum(tl, d[i]).T))
+    width = t["gb"][i] - t["ga"][i]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # dx/dlambda of the piece's variable (lambda, or ln lambda on the log pieces)
+        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)), 2.0 / width)
+    dv = {k: dx[k] * scale for k in dx}  # d(stored series)/d(lambda)
+    dv["tau_d"] = v["tau_d"] * dv["log_tau_d"]
+    xi = 2.0 * lam * v["int_F2"]
+    small = xi < 0.5
+    # below xi = 1/2 from the energy balance xi = 2 lambda int_F2 (no cancellation as
+    # lambda -> 0); above, 2 int_F2 and 2 lambda int_F2' nearly cancel (by 1e4 at lambda = 3),
+    # so xi' = -2 e e' from ln e's series. e as _core forms it (solver.restitution).
+    dxi_balance = 2.0 * v["int_F2"] + 2.0 * lam * dv["int_F2"]
+    de = np.where(small, -dxi_balance / (2.0 * v["e"]), v["e"] * dv["log_e"])
+    dxi = np.where(small, dxi_balance, -2.0 * v["e"] * de)
+    if field == "e" or field == "impulse":
+        out = de
+    elif field == "xi":
+        out = dxi
+    elif field == "F_m":
+        out = 1.5 * np.sqrt(v["delta_m"]) * dv["delta_m"]
+    elif field == "tau_dr":
+        out = dv["tau_d"] - dv["tau_dc"]
+    elif field == "eta":
+        out = (dv["tau_d"] * v["tau_dc"] - v["tau_d"] * dv["tau_dc"]) / v["tau_dc"] ** 2
+    else:
+        out = dv[field]
+    return out.reshape(lam_in.shape)
+
+
+def _one_series(lam: np.ndarray, key: str):
+    """One stored summary series and its d/dlambda at lam (1-D): only that series is summed
+    (the inverse's Newton steps need one or two of the six)."""
+    t = _tables()
+    k = t["summary_keys"].index(key)
+    i, x = _piece(lam)
+    c = t["summary"][:, k, :]
+    d = _derivative_coefficients()[:, k, :]
+    tl = np.polynomial.chebyshev.chebvander(x, c.shape[1] - 1)
+    val = np.einsum("nk,nk->n", tl, c[i])
+    der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i, : tl.shape[1]])
+    width = t["gb"][i] - t["ga"][i]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)), 2.0 / width)
+    return val, der * scale
+
+
+def log_quantity(lam, quantity: str):
+    """(ln q, d ln q / d lambda) for q = e (from the stored ln e, the form ``summary`` uses
+    where xi >= 1/2), xi = 2 lambda int_F2 (exact for Eq. 10; lambda > 0) or tau_d, each from
+    the one series it needs. For :mod:`zener_sym.exact.inverse`."""
+    lam = np.asarray(lam, dtype=float).reshape(-1)
+    if quantity == "e":
+        return _one_series(lam, "log_e")
+    if quantity == "tau_d":
+        return _one_series(lam, "log_tau_d")
+    if quantity == "xi":
+        f, df = _one_series(lam, "int_F2")
+        return np.log(2.0 * lam * f), 1.0 / lam + df / f
+    raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
 
 
 def _piece_coefficients(per, ip, tl_all, deg, n_sub):

@@ -15,6 +15,7 @@ from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
 from .scene.compare import Comparison, compare
 from .scene.stress_waves import stress_wave_k, stress_wave_loss
+from .scene.calibrate import DissipationFit, dissipation_for, fit_dissipation, thickness_for
 
 __version__ = "0.2.0"
 
@@ -30,4 +31,5 @@ __all__ = ["summary", "history", "lam_for", "Summary", "History", "MODELS", "Fie
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
            "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
            "compare", "Comparison", "__version__",
-           "viscoelastic_lambda", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss"]
+           "viscoelastic_lambda", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss",
+           "dissipation_for", "thickness_for", "fit_dissipation", "DissipationFit"]

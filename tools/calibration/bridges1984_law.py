@@ -27,8 +27,8 @@ HEADER = """\
 # 0.0077^0.234 = 0.320). Sphere size, material constants and temperature are not in this file;
 # docs/viscoelastic.md states the values assumed for the fit.
 # Speed range: 0.015-2 cm/s is the range of the same group's pendulum (Hatzes, Bridges & Lin
-# 1988, MNRAS 231; 50 mm ice spheres), as tabulated by Hill et al. (2015), A&A 573, A49,
-# Table 2. Bridges et al. (1984)'s own stated range could not be checked here.
+# 1988, MNRAS 231; 50 mm ice spheres), as tabulated in A&A 573, A49 (2015), Table 2.
+# Bridges et al. (1984)'s own stated range could not be checked here.
 """
 
 

@@ -67,7 +67,7 @@ def run(args, out=print) -> int:
     out(str(fit))
     if plot:
         try:
-            fit.plot(plot, title=args.title)
+            fit.plot(plot, title=args.title, data_label=args.data_label)
         except ImportError as exc:
             print(f"zener-sym fit: error: --plot: {exc}", file=sys.stderr)
             return 2
@@ -98,4 +98,6 @@ def add_parser(sub) -> None:
     p.add_argument("--plot", default=None, metavar="OUT.png",
                    help="write the chart (png, pdf or svg; needs matplotlib)")
     p.add_argument("--title", default=None, help="title of the chart")
+    p.add_argument("--data-label", dest="data_label", default="measured",
+                   help="legend entry of the points (default 'measured')")
     p.set_defaults(func=run)

@@ -19,9 +19,16 @@ def _speed_grid(v0: np.ndarray, n: int = 200) -> np.ndarray:
     return np.geomspace(lo / 1.15, hi * 1.15, n)
 
 
-def fit_chart(fit, path=None, title=None):
+def _sci(x: float) -> str:
+    """Math text of x to 3 digits: 1.26e-04 -> 1.26 x 10^-4."""
+    mant, _, exp = f"{x:.2e}".partition("e")
+    return rf"${mant}\times10^{{{int(exp)}}}$"
+
+
+def fit_chart(fit, path=None, title=None, data_label="measured"):
     """Draw ``fit`` (a :class:`~zener_sym.scene.calibrate.DissipationFit`): e(v0) above, the
     residuals e - e_fit below; save to ``path`` if given (its suffix picks the format).
+    ``data_label`` names the points in the legend.
 
     Returns
     -------
@@ -39,10 +46,10 @@ def fit_chart(fit, path=None, title=None):
         ax.fill_between(grid, pred["e_low"], pred["e_high"], color=exact["color"], alpha=0.15,
                         linewidth=0, label=f"{fit.confidence:.0%} interval of $A$")
         ax.plot(grid, pred["e"], color=exact["color"], linestyle="-",
-                label=f"fit, $A$ = {fit.A:.3g} s")
+                label=f"fit, $A$ = {_sci(fit.A)} s")
         err = fit.sigma
         ax.errorbar(fit.v0, fit.e, yerr=err, fmt="o", color=data_color, markersize=3.5,
-                    elinewidth=0.8, capsize=1.5, label="measured")
+                    elinewidth=0.8, capsize=1.5, label=data_label)
         ax.set_ylabel(_st.label("e"))
         ax.legend(loc="best")
         axr.axhline(0.0, color=exact["color"], linewidth=0.8)

@@ -428,7 +428,7 @@ class DissipationFit:
     def __str__(self) -> str:
         return self.summary()
 
-    def plot(self, path=None, *, title=None):
+    def plot(self, path=None, *, title=None, data_label="measured"):
         """Chart: the data (with error bars when sigma was given), the fitted e(v0) and the band
         of A's interval; below, the residuals. Needs matplotlib (the ``plot`` extra).
 
@@ -437,6 +437,8 @@ class DissipationFit:
         path : str or Path, optional
             Where to save (its suffix picks the format); the figure is returned either way.
         title : str, optional
+        data_label : str
+            Legend entry of the points (default ``"measured"``).
 
         Returns
         -------
@@ -444,7 +446,7 @@ class DissipationFit:
         """
         from ..plot.calibration import fit_chart
 
-        return fit_chart(self, path=path, title=title)
+        return fit_chart(self, path=path, title=title, data_label=data_label)
 
 
 def _trend(v0, e, w) -> float:

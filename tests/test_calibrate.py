@@ -70,6 +70,14 @@ def test_dissipation_for_refuses(e, v0, message):
     assert message in str(info.value)
 
 
+@pytest.mark.parametrize("contact_end", ["force", "delta"])
+def test_dissipation_for_refuses_an_e_no_lambda_reaches(contact_end):
+    floor = float(zs.summary(1000.0, model="exact", contact_end=contact_end).e)
+    with pytest.raises(ValueError) as info:
+        zs.dissipation_for(floor / 2, 1.0, **GRAINS, contact_end=contact_end)
+    assert "1000" in str(info.value)
+
+
 def test_thickness_for_gives_the_plate_that_gives_e():
     sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
     for e in (0.9, 0.5, 0.1):
@@ -78,6 +86,8 @@ def test_thickness_for_gives_the_plate_that_gives_e():
         assert zs.summary(sc2.lam, model="exact").e == pytest.approx(e, rel=1e-11)
     with pytest.raises(ValueError, match="infinitely thick"):
         zs.thickness_for(sc, 1.0)
+    with pytest.raises(ValueError, match="must be a zener_sym.Scene"):
+        zs.thickness_for(0.5, 0.5)
 
 
 # -- the fit ----------------------------------------------------------------------------------

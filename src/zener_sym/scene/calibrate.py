@@ -514,7 +514,7 @@ def fit_dissipation(v0, e, R1, m1, material1, *, sigma=None, R2=None, m2=None, m
         raise ValueError(f"v0 and e must have equal lengths, got {v_.size} speeds and "
                          f"{e_.size} values of e")
     if sigma is not None:
-        s_ = np.atleast_1d(_pos_array(sigma, "sigma", "1", "standard deviation of e"))
+        s_ = np.atleast_1d(_pos_array(sigma, "sigma", "units of e", "standard deviation of e"))
         if s_.size == 1:
             s_ = np.full(e_.size, float(s_.ravel()[0]))
         if s_.shape != e_.shape:

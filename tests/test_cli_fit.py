@@ -69,3 +69,15 @@ def test_fit_refuses_a_missing_file_and_rising_e(tmp_path, capsys):
     assert "cannot read" in capsys.readouterr().err
     assert cli.main(_argv(_csv(tmp_path, reverse_e=True))) == 2
     assert "e rises with speed" in capsys.readouterr().err
+
+
+def test_fit_two_spheres_matches_the_python_fit(tmp_path, capsys):
+    path = _csv(tmp_path)
+    argv = ["fit", "--data", str(path), "--sphere", "glass", "--radius", "1mm", "--mass", "0.01g",
+            "--sphere2", "steel", "--radius2", "2mm", "--mass2", "0.05g", "--contact-end", "delta"]
+    assert cli.main(argv) == 0
+    A_cli = float(re.search(r"A = (\S+) s", capsys.readouterr().out).group(1))
+    m = zs.scene.calibrate.read_measurements(path)
+    fit = zs.fit_dissipation(m.v0, m.e, "1 mm", 1e-5, "glass", R2="2 mm", m2=5e-5,
+                             material2="steel", contact_end="delta")
+    assert A_cli == pytest.approx(fit.A, rel=1e-5)

@@ -179,3 +179,10 @@ def test_derivation_parts_do_not_import_their_registry():
 def test_few_plain_modules_at_the_top(folder):
     plain = sorted(p.name for p in (ROOT / folder).glob("*.py"))
     assert len(plain) <= 8, plain
+
+
+def test_runtime_tables_import_no_builder():
+    # the runtime reads its table layout from the generated file, never from an offline builder
+    for m in ("zener_sym.exact.table", "zener_sym.ham.table"):
+        builders = sorted(d for d in GRAPH[m] if d.rpartition(".")[2] == "table_build")
+        assert not builders, f"{m} imports {builders}"

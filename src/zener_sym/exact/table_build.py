@@ -57,6 +57,8 @@ import pathlib
 
 import numpy as np
 
+from .table_layout import Layout, lin_log, parse_array
+
 #: Breakpoints of the lambda pieces: the summary and history tables cover [0, 1000].
 LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0, 1000.0)
 #: Pieces starting at or above this lambda use ln(lambda) as their Chebyshev variable (their
@@ -76,7 +78,7 @@ MATCH_DECAYS = 40.0
 #: Chebyshev points per lambda piece.
 N_LAM = 22
 #: Sub-pieces (equal parts of the reduced time y) per time piece; piece M exists on the ln-lambda
-#: pieces only (see ``split_time``).
+#: pieces only (see ``Layout.split_time``).
 N_SUB = {"C": 12, "A": 16, "M": 16, "B": 12}
 #: Chebyshev points per sub-piece of each time piece: low degrees keep the evaluation cheap
 #: (each degree costs one pass over the points), more sub-pieces keep the accuracy.
@@ -109,8 +111,12 @@ HISTORY_QUANTUM = 1e-15
 CHECK_RTOL = 1e-10
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest_over_lam")
-HISTORY_KEYS = ("f", "I")
-TIME_PIECES = ("C", "A", "M", "B")
+#: The layout the runtime reads back from the generated table (``table_layout.Layout.of``).
+LAYOUT = Layout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, HISTORY_TO=HISTORY_TO,
+                C_STRETCH=C_STRETCH, C_END=C_END, S_ORBIT=S_ORBIT, S_TRANSIENT=S_TRANSIENT,
+                N_SUB=N_SUB)
+HISTORY_KEYS = LAYOUT.HISTORY_KEYS
+TIME_PIECES = LAYOUT.TIME_PIECES
 
 
 def cheb_nodes(n: int) -> np.ndarray:
@@ -128,43 +134,10 @@ def cheb_coefficients(values: np.ndarray, axis: int = 0) -> np.ndarray:
     return np.moveaxis(np.tensordot(m, values, axes=1), 0, axis)
 
 
-def split_time(lam, log_piece, tau_dc, tau_w0):
-    """tau_s, the end of piece A and start of piece M: tau_w0 for lambda <= LOG_FROM (no piece
-    M), tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)) above."""
-    lam = np.asarray(lam, dtype=float)
-    with np.errstate(divide="ignore"):
-        big = np.where(log_piece, lam, 1.0)
-        return np.where(log_piece, tau_dc + big * (S_ORBIT + S_TRANSIENT * big ** (-5.0 / 3.0)),
-                        tau_w0)
-
-
-def map_params(piece, lam, log_piece, tau_dc, tau_s, tau_w0):
-    """(start, end, c1, c2, c3) of the logarithmic-linear map ``lin_log`` of piece A or M."""
-    lam = np.asarray(lam, dtype=float)
-    inf = np.full(lam.shape, np.inf)
-    if piece == "A":
-        with np.errstate(divide="ignore"):
-            c1 = C_STRETCH * np.where(log_piece, (LOG_FROM / np.where(log_piece, lam, 1.0))
-                                      ** (2.0 / 3.0), 1.0)
-        return tau_dc, tau_s, c1, np.where(log_piece, inf, C_END * (1.0 + lam)), inf
-    return tau_s, tau_w0, inf, lam, lam
-
-
-def lin_log(tau, start, end, c1, c2, c3):
-    """Reduced time y in [0, 1] on [start, end]: u = ln(1 + (tau - start)/c1) + (tau - start)/c3
-    - ln(1 + (end - tau)/c2), normalised (c = inf drops a term). The logarithms resolve a
-    fast start (the relaxation after tau_dc, scale c1) and a change of regime at the end (where
-    w -> 0, scale c2); the linear term the orbit's steady decay (time scale c3 = lambda)."""
-    span = end - start
-    u0, u1 = -np.log1p(span / c2), np.log1p(span / c1) + span / c3
-    u = np.log1p((tau - start) / c1) + (tau - start) / c3 - np.log1p((end - tau) / c2)
-    return (u - u0) / (u1 - u0)
-
-
 def time_nodes(piece: str, y: np.ndarray, tau_dc: float, tau_w0: float, tau_d: float,
                params=None) -> np.ndarray:
     """tau at the reduced time y in [0, 1] of one time piece (see the module docstring); pieces
-    A and M invert ``lin_log`` (``params`` from ``map_params``) by bisection (monotone)."""
+    A and M invert ``lin_log`` (``params`` from ``Layout.map_params``) by bisection (monotone)."""
     if piece == "C":
         return tau_dc * y * y
     if piece == "B":
@@ -315,12 +288,13 @@ def piece_nodes(a: float, b: float) -> np.ndarray:
 
 def _history_samples(hist, tau_dc, tau_w0, tau_d, lam, log_piece) -> dict:
     """{(piece, "f"/"I"): [sub, point]} from hist(tau) -> (delta, w) at the sub-pieces' nodes."""
-    tau_s = float(split_time(lam, log_piece, tau_dc, tau_w0))
+    tau_s = float(LAYOUT.split_time(lam, log_piece, tau_dc, tau_w0))
     out = {}
     for piece in TIME_PIECES:
         if piece == "M" and not log_piece:
             continue
-        params = tuple(float(c) for c in map_params(piece, lam, log_piece, tau_dc, tau_s, tau_w0))
+        params = tuple(float(c) for c in LAYOUT.map_params(piece, lam, log_piece, tau_dc, tau_s,
+                                                           tau_w0))
         y = sub_nodes(piece)
         tau = time_nodes(piece, y, tau_dc, tau_w0, tau_d, params)
         d, w = hist(tau.ravel())
@@ -409,10 +383,10 @@ def build_tables() -> dict:
 
 
 def inputs_hash() -> str:
-    """SHA-256 (16 hex digits) of this builder and the solver it samples."""
+    """SHA-256 (16 hex digits) of this builder, the layout it writes and the solver it samples."""
     here = pathlib.Path(__file__).resolve().parent
     h = hashlib.sha256()
-    for name in ("table_build.py", "solver.py"):
+    for name in ("table_build.py", "table_layout.py", "solver.py"):
         h.update(name.encode())
         h.update((here / name).read_bytes().replace(b"\r\n", b"\n"))
     return h.hexdigest()[:16]
@@ -431,12 +405,6 @@ def _fmt_q(a: np.ndarray, quantum: float) -> str:
         return f"{v:.{n}g}"
 
     return f"{a.shape[0]} {a.shape[1]} " + " ".join(one(v) for v in a.ravel())
-
-
-def parse_array(text: str) -> np.ndarray:
-    """The 2-D array written by ``_fmt_q``."""
-    v = np.array(text.split(), dtype=float)
-    return v[2:].reshape(int(v[0]), int(v[1]))
 
 
 def _fmt(a: np.ndarray, indent: str) -> str:
@@ -461,14 +429,8 @@ def render(tables: dict | None = None) -> str:
         f"Inputs hash: {inputs_hash()}",
         '"""',
         f"INPUTS_HASH = {inputs_hash()!r}",
-        f"LAM_PIECES = {LAM_PIECES!r}",
-        f"LOG_FROM = {LOG_FROM!r}",
-        f"HISTORY_TO = {HISTORY_TO!r}",
-        f"C_STRETCH = {C_STRETCH!r}",
-        f"C_END = {C_END!r}",
-        f"S_ORBIT = {S_ORBIT!r}",
-        f"S_TRANSIENT = {S_TRANSIENT!r}",
-        f"N_SUB = {N_SUB!r}",
+        "#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
+        *LAYOUT.assignments(),
         "",
         "#: field -> one tuple of Chebyshev coefficients per lambda piece",
         "SUMMARY = {",
@@ -481,7 +443,7 @@ def render(tables: dict | None = None) -> str:
     lines += ["}", "",
               "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
               "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
-              "#: (table_build.parse_array)",
+              "#: (table_layout.parse_array)",
               "HISTORY = {"]
     for key in sorted(t["history"]):
         lines.append(f"    {key!r}: (")

@@ -36,6 +36,8 @@ import pathlib
 
 import numpy as np
 
+from .table import variable_ends
+
 #: Chebyshev points per lambda piece (first the two pieces in lambda, then the one in s).
 N_NODES = (28, 28, 36)
 #: The two pieces in lambda end here, the piece in s = sqrt(lambda - lam_cont) starts at lam_cont.
@@ -100,11 +102,6 @@ def continuation_lambda() -> float:
 def pieces(lam_cont: float) -> list[tuple[str, float, float]]:
     """(kind, start, end) of every lambda piece."""
     return [("lam", 0.0, LAM_SPLIT), ("lam", LAM_SPLIT, lam_cont), ("sqrt", lam_cont, lam_crit())]
-
-
-def variable_ends(kind: str, a: float, b: float) -> tuple[float, float]:
-    """The Chebyshev variable's ends on the piece [a, b]."""
-    return (a, b) if kind == "lam" else (0.0, float(np.sqrt(b - a)))
 
 
 def piece_nodes(kind: str, a: float, b: float, n: int) -> np.ndarray:

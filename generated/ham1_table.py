@@ -5,9 +5,9 @@ the float64 ham1 summary (zener_sym.ham.spectral.summary_numpy); `zener-sym ham1
 --check` rebuilds and compares numerically (the node values come from floating-point root
 finding and quadrature).
 
-Inputs hash: 6f3de602741b1e8c
+Inputs hash: c50ec761a51d93c6
 """
-INPUTS_HASH = '6f3de602741b1e8c'
+INPUTS_HASH = 'c50ec761a51d93c6'
 #: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)
 LAM_CONT = 2.0304532806603661
 #: (kind, start, end) per lambda piece; kind 'lam': Chebyshev variable lambda,

@@ -24,8 +24,8 @@ import importlib
 
 import numpy as np
 
-from ..blocks import BLOCK, field_buffers
-from ..ham.chebyshev import horner_take_pair
+from ..numerics.blocks import BLOCK, field_buffers
+from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
 from . import solver as _solver
 from .table_layout import Layout, parse_array
 
@@ -117,11 +117,7 @@ def _history_layout(history, log, lay) -> dict:
         st = {k: _stack(history[(piece, k)]) for k in lay.HISTORY_KEYS}  # [lp, sub, j, k]
         deg = max(a.shape[2] for a in st.values())
         n_sub = lay.N_SUB[piece]
-        conv = np.zeros((deg, deg))  # monomial = conv @ Chebyshev
-        for j in range(deg):
-            e = np.zeros(j + 1)
-            e[j] = 1.0
-            conv[: j + 1, j] = np.polynomial.chebyshev.cheb2poly(e)
+        conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
         fields = []
         for k in lay.HISTORY_KEYS:
             a = np.zeros((n_lam, n_sub, deg, max(x.shape[3] for x in st.values())))

@@ -132,11 +132,12 @@ def build_tables() -> dict:
 
 def inputs_hash() -> str:
     """SHA-256 (16 hex digits) of this builder, the reference it samples (``spectral``, the
-    ``chebyshev`` and ``quadrature`` helpers) and the generated ham1 kernels."""
+    numerical primitives of ``zener_sym.numerics``) and the generated ham1 kernels."""
     here = pathlib.Path(__file__).resolve().parent
     from ..codegen import generated_dir
 
-    files = [here / n for n in ("table_build.py", "spectral.py", "chebyshev.py", "quadrature.py")]
+    files = [here / n for n in ("table_build.py", "spectral.py")]
+    files += sorted((here.parent / "numerics").glob("*.py"))
     files.append(generated_dir() / "ham1_numpy.py")
     h = hashlib.sha256()
     for f in files:

@@ -17,7 +17,8 @@ import functools
 import numpy as np
 
 __all__ = ["cheb_nodes", "cheb_fit_matrix", "cheb_coefficients", "trim_trailing",
-           "cheb_to_monomial", "clenshaw_take", "horner_take", "horner_take_pair"]
+           "cheb_to_monomial", "coefficient_difference", "clenshaw_take", "horner_take",
+           "horner_take_pair"]
 
 
 def cheb_nodes(n: int) -> np.ndarray:
@@ -111,3 +112,14 @@ def horner_take_pair(rows, idx, x):
         rows[j].take(idx, out=tmp, mode="clip")
         fv += tv
     return fv[0::2], fv[1::2]
+
+
+def coefficient_difference(new, old, floor: float = 0.0) -> float:
+    """max |new - old| / max(max |new|, floor), both zero-padded to a common shape: how far a
+    rebuilt coefficient array is from a stored one (trimming may differ)."""
+    new, old = np.asarray(new, dtype=float), np.asarray(old, dtype=float)
+    shape = tuple(max(p, q) for p, q in zip(new.shape, old.shape))
+    a, b = np.zeros(shape), np.zeros(shape)
+    a[tuple(slice(0, n) for n in new.shape)] = new
+    b[tuple(slice(0, n) for n in old.shape)] = old
+    return float(np.abs(a - b).max() / max(np.abs(a).max(), floor))

@@ -2,8 +2,8 @@
 
 The tables (``generated/exact_table.py``, built offline by :mod:`zener_sym.exact.table_build` from
 the scipy solver at rtol 1e-13) cover ``LAM_MIN <= lambda <= LAM_MAX`` (0 to 1000) for the
-summary and the history (above ``table_build.LOG_FROM`` = 5 in the variable ln lambda, from the
-universal large-lambda orbit; ``HISTORY_LAM_MAX`` = ``LAM_MAX``). They are never extrapolated:
+summary and the history (above ``LOG_FROM`` = 5 in the variable ln lambda, from the universal
+large-lambda orbit; ``HISTORY_LAM_MAX`` = ``LAM_MAX``). They are never extrapolated:
 :func:`in_range` and :func:`history_in_range` tell the caller which lambda must be integrated.
 
 Documented error bounds: ``SUMMARY_RTOL`` relative on every summary field, ``HISTORY_ATOL`` on
@@ -24,18 +24,18 @@ import importlib
 
 import numpy as np
 
-from ..blocks import BLOCK, field_buffers
-from ..ham.chebyshev import horner_take_pair
+from ..numerics.blocks import BLOCK, field_buffers
+from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
 from . import solver as _solver
-from . import table_build as _build
+from .table_layout import Layout, parse_array
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
            "history_in_range", "summary", "summary_derivative", "DERIVATIVE_FIELDS", "history"]
 
-LAM_MIN = float(_build.LAM_PIECES[0])
-LAM_MAX = float(_build.LAM_PIECES[-1])
-#: The history tables end here (as the summary tables: LAM_MAX).
-HISTORY_LAM_MAX = float(_build.HISTORY_TO)
+#: LAM_MIN, LAM_MAX (the summary tables' range) and HISTORY_LAM_MAX (where the history tables
+#: end) are read from the generated table on first use (``__getattr__``): it is the one source of
+#: the layout.
+_RANGE = ("LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX")
 #: Documented (and tested) relative error bound of every summary field.
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
@@ -56,7 +56,7 @@ def _stack_summary(mats) -> np.ndarray:
 def _stack(pieces) -> np.ndarray:
     """One zero-padded array [lambda piece, sub-piece, time degree, lambda degree] (trimming
     varies)."""
-    mats = [[_build.parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float)
+    mats = [[parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float)
              for c in subs] for subs in pieces]
     flat = [c for subs in mats for c in subs]
     out = np.zeros((len(mats), max(len(subs) for subs in mats), max(c.shape[0] for c in flat),
@@ -79,30 +79,29 @@ def _pad_rows(rows) -> np.ndarray:
 def _tables():
     """The generated table, loaded on first use (importing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
-    if (tuple(t.LAM_PIECES) != tuple(_build.LAM_PIECES) or t.C_STRETCH != _build.C_STRETCH
-            or getattr(t, "LOG_FROM", None) != _build.LOG_FROM
-            or getattr(t, "HISTORY_TO", None) != _build.HISTORY_TO
-            or getattr(t, "C_END", None) != _build.C_END
-            or getattr(t, "N_SUB", None) != _build.N_SUB
-            or getattr(t, "S_ORBIT", None) != _build.S_ORBIT
-            or getattr(t, "S_TRANSIENT", None) != _build.S_TRANSIENT):
-        raise RuntimeError("generated/exact_table.py does not match zener_sym.exact.table_build (stale "
-                           "table): run `zener-sym exact-table`")
+    layout = Layout.of(t)
     edges = np.asarray(t.LAM_PIECES, dtype=float)
     log = edges[:-1] >= t.LOG_FROM
     # per piece: the Chebyshev variable's ends (lambda, or ln lambda on the large pieces)
     with np.errstate(divide="ignore"):
         ga = np.where(log, np.log(np.where(log, edges[:-1], 1.0)), edges[:-1])
         gb = np.where(log, np.log(edges[1:]), edges[1:])
-    return {"edges": edges, "log": log, "ga": ga, "gb": gb,
+    return {"layout": layout, "LAM_MIN": float(edges[0]), "LAM_MAX": float(edges[-1]),
+            "HISTORY_LAM_MAX": float(layout.HISTORY_TO), "edges": edges, "log": log, "ga": ga, "gb": gb,
             "summary_keys": tuple(t.SUMMARY),
             # [lambda piece, field, degree], zero-padded: all fields in one pass
             "summary": _stack_summary([_pad_rows([v[p] for v in t.SUMMARY.values()])
                                for p in range(len(t.LAM_PIECES) - 1)]),
-            "history": _history_layout(t.HISTORY, log)}
+            "history": _history_layout(t.HISTORY, log, layout)}
 
 
-def _history_layout(history, log) -> dict:
+def __getattr__(name):
+    if name in _RANGE:
+        return _tables()[name]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def _history_layout(history, log, lay) -> dict:
     """The history coefficients arranged for ``history``: per time piece and lambda piece one
     array [time degree, lambda degree, 2 * sub-piece + field] (field 0: f, 1: I; zero-padded to
     the time piece's largest degree), so the lambda contraction gives per line the pairs
@@ -114,17 +113,13 @@ def _history_layout(history, log) -> dict:
     tests/test_exact_fast.py)."""
     n_lam = len(log)
     layout = {}
-    for piece in _build.TIME_PIECES:
-        st = {k: _stack(history[(piece, k)]) for k in _build.HISTORY_KEYS}  # [lp, sub, j, k]
+    for piece in lay.TIME_PIECES:
+        st = {k: _stack(history[(piece, k)]) for k in lay.HISTORY_KEYS}  # [lp, sub, j, k]
         deg = max(a.shape[2] for a in st.values())
-        n_sub = _build.N_SUB[piece]
-        conv = np.zeros((deg, deg))  # monomial = conv @ Chebyshev
-        for j in range(deg):
-            e = np.zeros(j + 1)
-            e[j] = 1.0
-            conv[: j + 1, j] = np.polynomial.chebyshev.cheb2poly(e)
+        n_sub = lay.N_SUB[piece]
+        conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
         fields = []
-        for k in _build.HISTORY_KEYS:
+        for k in lay.HISTORY_KEYS:
             a = np.zeros((n_lam, n_sub, deg, max(x.shape[3] for x in st.values())))
             a[: st[k].shape[0], : st[k].shape[1], : st[k].shape[2], : st[k].shape[3]] = st[k]
             fields.append(np.einsum("ij,psjk->psik", conv, a))
@@ -143,7 +138,7 @@ def _history_layout(history, log) -> dict:
                 b[..., :n_k].transpose(2, 3, 0, 1).reshape(deg, n_k, 2 * n_sub)))
         # per lambda piece, the degree its trimmed coefficients need (Horner starts there)
         need = np.array([max([int(c.split(" ", 1)[0]) if isinstance(c, str) else np.shape(c)[0]
-                              for k in _build.HISTORY_KEYS for c in history[(piece, k)][p]]
+                              for k in lay.HISTORY_KEYS for c in history[(piece, k)][p]]
                              or [1]) for p in range(n_lam)])
         layout[piece] = (per, n_sub, deg, need)
     return layout
@@ -152,13 +147,15 @@ def _history_layout(history, log) -> dict:
 def in_range(lam) -> np.ndarray:
     """Boolean mask: lambda inside the summary table's validated range [LAM_MIN, LAM_MAX]."""
     lam = np.asarray(lam, dtype=float)
-    return (lam >= LAM_MIN) & (lam <= LAM_MAX)
+    t = _tables()
+    return (lam >= t["LAM_MIN"]) & (lam <= t["LAM_MAX"])
 
 
 def history_in_range(lam) -> np.ndarray:
     """Boolean mask: lambda inside the history table's range [LAM_MIN, HISTORY_LAM_MAX]."""
     lam = np.asarray(lam, dtype=float)
-    return (lam >= LAM_MIN) & (lam <= HISTORY_LAM_MAX)
+    t = _tables()
+    return (lam >= t["LAM_MIN"]) & (lam <= t["HISTORY_LAM_MAX"])
 
 
 def _piece(lam: np.ndarray, history: bool = False):
@@ -167,10 +164,11 @@ def _piece(lam: np.ndarray, history: bool = False):
     if not np.all(in_range(lam)):
         bad = float(lam[~in_range(lam)].ravel()[0])
         raise ValueError(f"lambda = {bad!r} is outside the exact table's range "
-                         f"[{LAM_MIN:g}, {LAM_MAX:g}]; integrate instead (backend='scipy')")
+                         f"[{_tables()['LAM_MIN']:g}, {_tables()['LAM_MAX']:g}]; integrate "
+                         "instead (backend='scipy')")
     t = _tables()
     edges = t["edges"]
-    last = (int(np.count_nonzero(edges[1:] <= HISTORY_LAM_MAX)) - 1 if history
+    last = (int(np.count_nonzero(edges[1:] <= t["HISTORY_LAM_MAX"])) - 1 if history
             else len(edges) - 2)
     i = np.clip(np.searchsorted(edges, lam, side="right") - 1, 0, last)
     log = t["log"][i]
@@ -359,7 +357,7 @@ def _piece_coefficients(per, ip, tl_all, deg, n_sub):
 
 
 def _scaled_maps(name, k, lu, log, v, tau_s):
-    """Per-line constants of piece ``name``'s reduced time times k, z = k y (``table_build``:
+    """Per-line constants of piece ``name``'s reduced time times k, z = k y (``table_layout``:
     C z = sqrt(a t); B z = sqrt(a (tau_d - t)); A and M z = a (u(t) - u0) with
     u = ln(1 + (t - s) i1) + (t - s) i3 - ln(1 + (e - t) i2) from ``lin_log``, i = 1/c (0 for an
     infinite c: the term vanishes; a term that vanishes on every line is skipped))."""
@@ -367,9 +365,9 @@ def _scaled_maps(name, k, lu, log, v, tau_s):
         return {"a": k * k / v["tau_dc"]}
     if name == "B":
         return {"a": k * k / (v["tau_d"] - v["tau_w0"]), "d": v["tau_d"]}
+    params = _tables()["layout"].map_params(name, lu, log, v["tau_dc"], tau_s, v["tau_w0"])
     start, end, c1, c2, c3 = (np.broadcast_to(np.asarray(q, dtype=float), lu.shape)
-                              for q in _build.map_params(name, lu, log, v["tau_dc"], tau_s,
-                                                         v["tau_w0"]))
+                              for q in params)
     with np.errstate(invalid="ignore", divide="ignore"):  # lines without this piece: unused
         span = end - start
         u0 = -np.log1p(span / c2)
@@ -460,11 +458,13 @@ def history(lam, tau) -> dict:
     if not np.all(history_in_range(lu)):
         bad = float(lu[~history_in_range(lu)][0])
         raise ValueError(f"lambda = {bad!r} is outside the exact history table's range "
-                         f"[{LAM_MIN:g}, {HISTORY_LAM_MAX:g}]; integrate instead (backend='scipy')")
+                         f"[{_tables()['LAM_MIN']:g}, {_tables()['HISTORY_LAM_MAX']:g}]; "
+                         "integrate instead (backend='scipy')")
     tau = tau.ravel()
     v, ip, xl = _core(lu, history=True)
     log = _tables()["log"][ip]
-    tau_s = _build.split_time(lu, log, v["tau_dc"], v["tau_w0"])
+    lay = _tables()["layout"]
+    tau_s = lay.split_time(lu, log, v["tau_dc"], v["tau_w0"])
     # piece of each point: 0 C, 1 A, 2 M (empty for lambda <= LOG_FROM, tau_s = tau_w0), 3 B,
     # 4 after the contact
     # (1 + [tau >= tau_s] + [tau >= tau_w0] + [tau >= tau_d]) [tau > tau_dc]: the last factor
@@ -487,7 +487,7 @@ def history(lam, tau) -> dict:
     tl_all = np.polynomial.chebyshev.chebvander(xl, max(
         c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)
     imp_end = 1.0 + v["e"]  # after the contact the impulse keeps its final value
-    for n, name in enumerate((*_build.TIME_PIECES, None)):
+    for n, name in enumerate((*lay.TIME_PIECES, None)):
         if name is not None:
             if not np.any(piece == n):
                 continue

@@ -8,7 +8,6 @@ The CSV has a speed column with its unit in the header (``v0_m_s``, ``v0 [cm/s]`
 from __future__ import annotations
 
 import sys
-import warnings
 
 from ..scene.calibrate import fit_dissipation, read_measurements
 from ..scene.scaling import sphere_mass
@@ -56,10 +55,8 @@ def run(args, out=print) -> int:
             kw.update(R2=R2, m2=_mass(args.mass2, R2, mat2, "--mass2"), material2=mat2)
         elif args.wall is not None and args.wall.lower() != "rigid":
             kw["wall"] = _material(args.wall, "wall", None)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)
-            fit = fit_dissipation(data.v0, data.e, R1, m1, mat1, sigma=data.sigma,
-                                  contact_end=args.contact_end, **kw)
+        fit = fit_dissipation(data.v0, data.e, R1, m1, mat1, sigma=data.sigma,
+                              contact_end=args.contact_end, **kw)
     except ValueError as exc:
         print(f"zener-sym fit: error: {exc}", file=sys.stderr)
         return 2

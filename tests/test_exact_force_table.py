@@ -79,7 +79,7 @@ def test_summary_identity_and_series():
                                de, rtol=1e-10)
 
 
-@pytest.mark.parametrize("lam", [1e-8, 0.0413, 0.61, 1.37, 3.3, 11.7, 97.0, 1000.0])
+@pytest.mark.parametrize("lam", [0.0, 1e-8, 0.0413, 0.61, 1.37, 3.3, 11.7, 97.0, 1000.0])
 def test_history_within_documented_bound(lam):
     r = force_end.solve(lam)
     tau = np.concatenate([np.linspace(0.0, r.tau_d * 1.05, 900),

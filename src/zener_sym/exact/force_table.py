@@ -282,7 +282,8 @@ def history(lam, tau) -> dict:
                 y = np.sqrt(tt * c_a.take(ll))
             else:
                 lg = log.take(ll)
-                gap = tau_p.take(ll) - tt
+                # >= 0: at lambda = 0 tau_d and tau_P are the same time, each to rounding
+                gap = np.maximum(tau_p.take(ll) - tt, 0.0)
                 with np.errstate(invalid="ignore"):
                     y_s = r_a.take(ll) * (1.0 - np.sqrt(np.where(lg, 0.0, gap) * r_b.take(ll)))
                 y = np.where(lg, (tt - dc[at]) * r_a.take(ll), y_s)

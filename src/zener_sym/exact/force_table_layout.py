@@ -54,7 +54,8 @@ def piece_variable(lam, log_piece):
 def recovery_z_end(tau_dc, tau_d, tau_p):
     """z at tau_d of the recovery map tau = tau_P - (tau_P - tau_dc) z^2 (z = 1 at tau_dc)."""
     with np.errstate(invalid="ignore", divide="ignore"):
-        return np.sqrt((tau_p - tau_d) / (tau_p - tau_dc))
+        # clipped at 0: at lambda = 0 tau_d = tau_P, each to rounding
+        return np.sqrt(np.maximum(tau_p - tau_d, 0.0) / (tau_p - tau_dc))
 
 
 def time_of(piece: str, y, tau_dc, tau_d, tau_p, log_piece):

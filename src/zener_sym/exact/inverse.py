@@ -26,6 +26,7 @@ import functools
 import numpy as np
 
 from .. import params
+from . import force_table as _force_table
 from . import table as _table
 
 __all__ = ["QUANTITIES", "lam_for", "reachable", "tau_d_branch"]
@@ -39,6 +40,11 @@ H_TOL = 4.0 * np.finfo(float).eps
 MAX_ITER = 200
 
 
+def _tab(contact_end: str):
+    """The table module of an end of contact."""
+    return _force_table if contact_end == "force" else _table
+
+
 @functools.cache
 def _grid(contact_end: str):
     """The bracketing grid of lambda (dense near 0, where the force end goes like sqrt(lambda),
@@ -47,8 +53,7 @@ def _grid(contact_end: str):
         [0.0], np.geomspace(1e-16, 1e-2, 57), np.linspace(1e-2, 5.0, 500),
         np.geomspace(5.0, _table.LAM_MAX, 400)]))
     lam = lam[lam <= _table.LAM_MAX]
-    s = _table.summary(lam, contact_end=contact_end) if contact_end != "delta" else \
-        _table.summary(lam)
+    s = _tab(contact_end).summary(lam)
     return lam, {k: np.asarray(s[k], dtype=float) for k in ("e", "xi", "tau_d")}
 
 
@@ -61,12 +66,12 @@ def tau_d_branch(contact_end: str = "delta"):
     bracketing grid; where it changes, the run that reaches LAM_MAX is kept (the other branch's
     values are refused as ambiguous)."""
     lam, _ = _grid(contact_end)
-    d = _table.summary_derivative(lam, "tau_d", contact_end=contact_end)
-    sign = np.sign(d)
+    pos = lam[lam > 0]  # the force end has no derivative at 0 (its variable is sqrt(lambda))
+    sign = np.sign(_table.summary_derivative(pos, "tau_d", contact_end=contact_end))
     sign[sign == 0] = sign[np.flatnonzero(sign)[-1]]
     change = np.flatnonzero(sign[1:] != sign[:-1])
-    start = 0 if change.size == 0 else change[-1] + 1
-    return float(lam[start]), float(lam[-1]), int(sign[-1])
+    start = 0.0 if change.size == 0 else float(pos[change[-1] + 1])
+    return start, float(lam[-1]), int(sign[-1])
 
 
 def reachable(quantity: str, contact_end: str = "delta") -> tuple:
@@ -105,9 +110,8 @@ def lam_for(e=None, xi=None, tau_d=None, contact_end: str = "delta") -> np.ndarr
     if len(given) != 1:
         raise ValueError(f"give exactly one of e=, xi=, tau_d= (got {', '.join(given) or 'none'})")
     (name, value), = given.items()
-    if contact_end != "delta":
-        raise ValueError(f"contact_end={contact_end!r}: the inverse needs the Chebyshev tables, "
-                         f"which exist for contact_end='delta' only")
+    if contact_end not in ("delta", "force"):
+        raise ValueError(f"unknown contact_end {contact_end!r}; allowed: 'delta', 'force'")
     x = _targets(value, name)
     lam_max = _table.LAM_MAX
     lo_v, hi_v = reachable(name, contact_end)
@@ -162,9 +166,7 @@ def lam_for(e=None, xi=None, tau_d=None, contact_end: str = "delta") -> np.ndarr
 
 def _log_quantity(quantity, lam, contact_end):
     """(ln q, d ln q / d lambda) from the tables' one series behind q."""
-    if contact_end == "delta":
-        return _table.log_quantity(lam, quantity)
-    return _table.log_quantity(lam, quantity, contact_end=contact_end)
+    return _tab(contact_end).log_quantity(lam, quantity)
 
 
 def _solve(quantity: str, target: np.ndarray, contact_end: str) -> np.ndarray:

@@ -251,7 +251,8 @@ def summary_derivative(lam, field: str = "e", contact_end: str = "delta") -> np.
     field : str
         One of ``DERIVATIVE_FIELDS`` (Eqs. 23-24, 61, 69, 76 for their definitions).
     contact_end : str
-        ``"delta"`` (the plate end of contact).
+        ``"delta"`` (the plate end of contact) or ``"force"`` (the force-free end,
+        :func:`zener_sym.exact.force_table.summary_derivative`; lambda > 0 there).
 
     Returns
     -------
@@ -263,8 +264,13 @@ def summary_derivative(lam, field: str = "e", contact_end: str = "delta") -> np.
     ValueError
         For an unknown field or contact end, or lambda outside [LAM_MIN, LAM_MAX] or not finite.
     """
+    if contact_end == "force":
+        from . import force_table
+
+        return force_table.summary_derivative(lam, field)
     if contact_end != "delta":
-        raise ValueError(f"contact_end {contact_end!r}: only 'delta' (the plate) has tables here")
+        raise ValueError(f"unknown contact_end {contact_end!r}; allowed: 'delta' (the plate) or "
+                         f"'force' (the grains' force-free end)")
     if not isinstance(field, str) or field not in DERIVATIVE_FIELDS:
         raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
                          f"{', '.join(DERIVATIVE_FIELDS)}")

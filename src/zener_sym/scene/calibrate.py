@@ -10,8 +10,7 @@ Eq. (10) with the chosen end of contact. So
   (:func:`fit_dissipation`). The fit runs in p = ln A (A stays positive, and e depends on A only
   through lambda, so the problem is as well scaled at A = 1e-12 s as at 1 s). Its Jacobian is
   de_i/dp = e'(lambda_i) lambda_i, e' = de/dlambda from the exact tables (not finite
-  differences). An end of contact without tables (the force-free end, until its tables exist)
-  falls back to root searches and central differences of the integrated e: slower, same answer;
+  differences), for either end of contact;
 - for Zener's plate, lambda is proportional to H^{-2} (derived Eq. 11), so the thickness that
   gives a measured e is H lam^{1/2} / lam_for(e)^{1/2} (:func:`thickness_for`).
 
@@ -22,7 +21,6 @@ constrain it); it is fixed by the material given, and the fitted A scales as E*^
 from __future__ import annotations
 
 import csv
-import functools
 import io
 import math
 import re
@@ -30,11 +28,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import api as _api
-from ..api import summary
+from ..api import lam_for, summary
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
-from ..exact import table as _table
+from ..exact.table import summary_derivative
 from .grains import GrainContact, _pos_array, grain_contact
 from .scene import Scene
 from .units import UNITS
@@ -44,55 +41,6 @@ __all__ = ["dissipation_for", "thickness_for", "fit_dissipation", "DissipationFi
 
 #: Confidence level of the reported interval.
 CONFIDENCE = 0.95
-
-
-@functools.lru_cache(maxsize=None)
-def _tabulated(contact_end: str) -> bool:
-    """Whether the exact model has Chebyshev tables (hence lam_for and summary_derivative) for
-    this end of contact."""
-    try:
-        _table.summary_derivative(0.5, field="e", contact_end=contact_end)
-    except ValueError:
-        return False
-    return True
-
-
-def _lam_of_e(e, contact_end: str) -> np.ndarray:
-    """lambda with e(lambda) = e: ``zener_sym.lam_for`` on the tables; where an end has no
-    tables yet, a bracketed root of the integrated e (one value at a time, slow)."""
-    if _tabulated(contact_end):
-        return np.asarray(_api.lam_for(e=e, contact_end=contact_end), dtype=float)
-    from scipy.optimize import brentq
-
-    e = np.asarray(e, dtype=float)
-    e_min = float(summary(LAMBDA_MAX, model="exact", contact_end=contact_end).e)
-    if np.any(e < e_min):
-        raise ValueError(f"e = {float(e.min())!r} is below e(lambda = {LAMBDA_MAX:g}) = "
-                         f"{e_min:.6g} ({contact_end!r} end); reachable: {e_min:.6g} <= e <= 1")
-
-    def root(x):
-        if x == 1.0:
-            return 0.0
-        if x == e_min:
-            return LAMBDA_MAX
-        f = lambda lam: float(summary(lam, model="exact", contact_end=contact_end).e) - x  # noqa: E731
-        return brentq(f, 0.0, LAMBDA_MAX, xtol=1e-300, rtol=1e-15, maxiter=200)
-
-    return np.vectorize(root, otypes=[float])(e)
-
-
-def _de_dlam(lam, contact_end: str) -> np.ndarray:
-    """de/dlambda: from the tables (``summary_derivative``); where an end has no tables yet, a
-    central difference of the integrated e (step 1e-6 relative; the integrator is good to about
-    1e-12, so the slope to about 1e-6 -- enough for the fit's Jacobian, not for its answer,
-    which is set by the residuals)."""
-    lam = np.asarray(lam, dtype=float)
-    if _tabulated(contact_end):
-        return np.asarray(_table.summary_derivative(lam, field="e", contact_end=contact_end))
-    h = 1e-6 * np.maximum(lam, 1e-3)
-    lo, hi = np.maximum(lam - h, 0.0), np.minimum(lam + h, LAMBDA_MAX)
-    e = lambda x: np.asarray(summary(x, model="exact", contact_end=contact_end).e)  # noqa: E731
-    return (e(hi) - e(lo)) / (hi - lo)
 
 
 def _rate(contact: GrainContact, v0) -> np.ndarray:
@@ -152,7 +100,7 @@ def dissipation_for(e, v0, R1, m1, material1, *, R2=None, m2=None, material2=Non
     v_ = _pos_array(v0, "v0", "m/s", "impact speed")
     contact = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
     e_b, v_b = np.broadcast_arrays(e_, v_)
-    A = _lam_of_e(e_b, ce) / _rate(contact, v_b)
+    A = np.asarray(lam_for(e=e_b, contact_end=ce), dtype=float) / _rate(contact, v_b)
     return float(A) if A.ndim == 0 else A
 
 
@@ -195,7 +143,7 @@ def thickness_for(scene: Scene, e) -> float:
     e_ = float(_e_array(e))
     if e_ == 1.0:
         raise ValueError("e = 1 needs lambda = 0, an infinitely thick plate; allowed: 0 < e < 1")
-    lam = float(_api.lam_for(e=e_, contact_end="delta"))
+    lam = float(lam_for(e=e_, contact_end="delta"))
     return scene.thickness * math.sqrt(scene.lam / lam)
 
 
@@ -543,7 +491,7 @@ def fit_dissipation(v0, e, R1, m1, material1, *, sigma=None, R2=None, m2=None, m
 
     # start: the median of the one-point inversions (each e clipped into the reachable range)
     e_floor = float(summary(LAMBDA_MAX, model="exact", contact_end=ce).e)
-    lam0 = _lam_of_e(np.clip(e_, e_floor * (1 + 1e-12), 1.0), ce)
+    lam0 = np.asarray(lam_for(e=np.clip(e_, e_floor * (1 + 1e-12), 1.0), contact_end=ce))
     a0 = lam0 / c
     p0 = math.log(float(np.median(a0[a0 > 0]))) if np.any(a0 > 0) else p_max - 10.0
     p0 = min(p0, p_max - 1e-9)
@@ -557,7 +505,7 @@ def fit_dissipation(v0, e, R1, m1, material1, *, sigma=None, R2=None, m2=None, m
 
     def jacobian(p):
         lam = lams(p)
-        de = _de_dlam(lam, ce)
+        de = summary_derivative(lam, field="e", contact_end=ce)
         return (-de * lam * inv_s)[:, None]
 
     sol = least_squares(residuals, [p0], jac=jacobian, bounds=([-np.inf], [p_max]),

@@ -105,13 +105,14 @@ def test_fit_recovers_a_known_A_without_noise(contact_end):
     assert fit.A_se / fit.A < 1e-9  # no scatter, no uncertainty beyond the tables' own
 
 
-def test_the_95_interval_covers_the_true_A_in_at_least_90_of_100_noisy_draws():
+@pytest.mark.parametrize("contact_end", ["force", "delta"])
+def test_the_95_interval_covers_the_true_A_in_at_least_90_of_100_noisy_draws(contact_end):
     rng = np.random.default_rng(20261125)
-    e0 = _e(A_TRUE, SPEEDS, "delta")
+    e0 = _e(A_TRUE, SPEEDS, contact_end)
     covered = 0
     for _ in range(100):
         e = e0 + rng.normal(0.0, 0.01, SPEEDS.size)
-        fit = zs.fit_dissipation(SPEEDS, e, **GRAINS, **WALL, contact_end="delta")
+        fit = zs.fit_dissipation(SPEEDS, e, **GRAINS, **WALL, contact_end=contact_end)
         covered += fit.A_ci[0] <= A_TRUE <= fit.A_ci[1]
     assert covered >= 90, covered
 

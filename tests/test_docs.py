@@ -15,7 +15,7 @@ DOCTEST_MODULES = ["zener_sym", "zener_sym.api", "zener_sym.models.base", "zener
                    "zener_sym.scene.compare", "zener_sym.scene.units", "zener_sym.scene.checks",
                    "zener_sym.scene.materials", "zener_sym.scene.select",
                    "zener_sym.scene.grains", "zener_sym.scene.lookup",
-                   "zener_sym.scene.stress_waves"]
+                   "zener_sym.scene.stress_waves", "zener_sym.scene.calibrate"]
 
 
 @pytest.mark.parametrize("name", DOCTEST_MODULES)

@@ -86,7 +86,7 @@ def test_pulse_impulse_against_quadrature_of_its_force(model):
 
 
 def test_reed_closed_form_integral():
-    from zener_sym.ham.quadrature import impulse_s
+    from zener_sym.numerics.sqrt_integrals import impulse_s
 
     x = np.array([0.0, 0.3, np.pi / 2, np.pi / 2 + 1e-4, 2.0, np.pi])
     with mpmath.workdps(30):
@@ -122,7 +122,7 @@ def test_ham0_series_impulse_matches_the_generated_kernel():
 
 
 def test_line_blocks_cover_the_grid_once():
-    from zener_sym.blocks import line_blocks
+    from zener_sym.numerics.blocks import line_blocks
 
     for n_lines, n_col, size in ((7, 3, 8), (3, 20, 8), (1, 1, 8), (5, 8, 8)):
         hits = np.zeros((n_lines, n_col), dtype=int)

@@ -6,7 +6,7 @@ and numeric kernels generated from that derivation.
     >>> round(s.e, 6)
     0.180735
 """
-from .api import History, Summary, history, summary
+from .api import History, Summary, history, lam_for, summary
 from .models import REGISTRY, FieldUnavailableError
 from .scene.checks import ZenerWarning
 from .scene.grains import GrainImpact, grain_impact, viscoelastic_lambda
@@ -15,6 +15,7 @@ from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
 from .scene.compare import Comparison, compare
 from .scene.stress_waves import stress_wave_k, stress_wave_loss
+from .scene.calibrate import DissipationFit, dissipation_for, fit_dissipation, thickness_for
 
 __version__ = "0.2.0"
 
@@ -26,8 +27,9 @@ def __getattr__(name):
     raise AttributeError(f"module 'zener_sym' has no attribute {name!r}")
 
 
-__all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError",
+__all__ = ["summary", "history", "lam_for", "Summary", "History", "MODELS", "FieldUnavailableError",
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
            "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
            "compare", "Comparison", "__version__",
-           "viscoelastic_lambda", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss"]
+           "viscoelastic_lambda", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss",
+           "dissipation_for", "thickness_for", "fit_dissipation", "DissipationFit"]

@@ -36,7 +36,7 @@ class _HalfWavePrinter(_NumpyPrinter):
     first half wave (``ham.chebyshev.half_wave_sin``: sin on [0, pi], 0 beyond; vectorized)."""
 
     def _print_sin(self, e):
-        return f"_hn.half_wave_sin({self._print(e.args[0])})"
+        return f"_el.half_wave_sin({self._print(e.args[0])})"
 
 
 class _MpPrinter(MpmathPrinter):
@@ -87,10 +87,12 @@ def _summary0_outputs(e):
 _NP_PRELUDE = '''
 import numpy
 
-from zener_sym.ham import chebyshev as _hn
-from zener_sym.ham.quadrature import sqrt_integrals
+from zener_sym.numerics import elementary as _el
+from zener_sym.numerics import integrate as _int
+from zener_sym.numerics.roots import first_root
+from zener_sym.numerics.sqrt_integrals import sqrt_integrals
 
-_p3 = _hn.p3
+_p3 = _el.p3
 
 #: Critical lambda: omega0 = 0 there (Eq. 81); the HAM solution needs 0 <= lambda < LAM_CRIT.
 LAM_CRIT = {lam_crit_float}
@@ -277,7 +279,7 @@ def compression_end(lam):
     """tau_dc: first zero of delta' (root finding, vectorised over lambda)."""
     lam = numpy.atleast_1d(_lam(lam)).astype(float).ravel()
     k, beta, omega0 = params(lam)
-    return _hn.first_root(delta_dot_scaled, lam, numpy.zeros_like(lam), numpy.pi / omega0,
+    return first_root(delta_dot_scaled, lam, numpy.zeros_like(lam), numpy.pi / omega0,
                           n_scan=64, what="end of compression (delta' = 0)")
 
 
@@ -287,7 +289,7 @@ def contact_end(lam, tau_dc=None):
     k, beta, omega0 = params(lam)
     if tau_dc is None:
         tau_dc = compression_end(lam)
-    return _hn.first_root(delta_scaled, lam, tau_dc, 3.0 * numpy.pi / omega0, n_scan=192,
+    return first_root(delta_scaled, lam, tau_dc, 3.0 * numpy.pi / omega0, n_scan=192,
                           what="end of contact (delta = 0)")
 
 
@@ -297,9 +299,9 @@ def _contact_integral(fun, tau, lam, tau_d):
     k, beta, omega0 = params(lam)
     end = numpy.minimum(tau, tau_d)
     tpi = numpy.pi / omega0
-    first = _hn.cumulative_integral(fun, 0.0, numpy.minimum(tau_d, tpi), lam,
+    first = _int.cumulative_integral(fun, 0.0, numpy.minimum(tau_d, tpi), lam,
                                     numpy.minimum(end, tpi))
-    second = _hn.cumulative_integral(fun, tpi, numpy.maximum(tau_d, tpi), lam,
+    second = _int.cumulative_integral(fun, tpi, numpy.maximum(tau_d, tpi), lam,
                                      numpy.maximum(end, tpi))
     return first + second
 
@@ -381,7 +383,7 @@ def build_ham1_numpy() -> str:
 _MP_PRELUDE = '''
 import mpmath
 
-from zener_sym.ham import mp as _hn
+from zener_sym.numerics import mp as _hn
 
 _p3 = _hn.p3_mp
 

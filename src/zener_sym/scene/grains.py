@@ -17,8 +17,8 @@ A, the dissipative constant, is a time in seconds: the ratio of the contact's vi
 elastic stiffness. For a viscoelastic solid with Young's modulus E, Poisson ratio nu and the
 two viscous constants eta1, eta2 of the bulk, Brilliantov et al. (1996) give
 A = (1/3) (3 eta2 - eta1)^2/(3 eta2 + 2 eta1) (1 - nu^2)(1 - 2 nu)/(E nu^2); in practice A is
-fitted to one measured coefficient of restitution, which this module's inverse does not do for
-you, but ``viscoelastic_lambda`` and ``grain_impact`` make the fit a one-line root search.
+fitted to measured coefficients of restitution: ``zener_sym.dissipation_for`` (one e at one
+speed) and ``zener_sym.fit_dissipation`` (pairs (v0_i, e_i)), in :mod:`zener_sym.scene.calibrate`.
 
 The contact ends, by default, where the viscoelastic force vanishes (``contact_end="force"``, the
 granular literature's criterion, Schwager & Poeschel 2008); ``contact_end="delta"`` ends it at
@@ -38,7 +38,7 @@ from ..exact.solver import LAMBDA_MAX
 from .materials import Material, get_material
 from .units import si_value
 
-__all__ = ["viscoelastic_lambda", "GrainImpact", "grain_impact"]
+__all__ = ["viscoelastic_lambda", "GrainImpact", "grain_impact", "GrainContact", "grain_contact"]
 
 
 def _positive(value, field: str, unit: str, what: str) -> float:
@@ -168,6 +168,55 @@ _CRITERIA = {"force": "contact ends where the viscoelastic force rho (xi^3/2 + A
              "delta": "contact ends where the compression xi returns to 0 (plate criterion)"}
 
 
+@dataclass(frozen=True)
+class GrainContact:
+    """The constants of a viscoelastic grain contact (SI): effective mass m_eff [kg], Hertz
+    constant rho = (4/3) E* sqrt(R_eff) [N/m^{3/2}], effective radius R_eff [m] and modulus
+    E* [Pa] (module docstring)."""
+
+    m_eff: float
+    rho: float
+    R_eff: float
+    E_star: float
+
+
+def grain_contact(R1, m1, material1, *, R2=None, m2=None, material2=None,
+                  wall=None) -> GrainContact:
+    """m_eff, rho, R_eff and E* of two spheres, or of sphere 1 on a wall (inputs as
+    :func:`grain_impact`, which uses it, as do the inverse and the fit of
+    :mod:`zener_sym.scene.calibrate`).
+
+    Raises
+    ------
+    ValueError
+        For a non-positive or non-finite radius or mass, an unknown material, or a half-given
+        sphere 2.
+    """
+    R1 = si_value(R1, "length", "R1")
+    m1 = _positive(m1, "m1", "kg", "mass of sphere 1")
+    mat1 = get_material(material1)
+    given = [x is not None for x in (R2, m2, material2)]
+    if any(given) and not all(given):
+        raise ValueError("sphere 2 needs all of R2, m2 and material2 (leave all out for a wall)")
+    if all(given) and wall is not None:
+        raise ValueError("give either sphere 2 (R2, m2, material2) or wall=, not both")
+    inv_E = (1 - mat1.nu**2) / mat1.E
+    if all(given):
+        R2 = si_value(R2, "length", "R2")
+        m2 = _positive(m2, "m2", "kg", "mass of sphere 2")
+        mat2 = get_material(material2)
+        inv_E += (1 - mat2.nu**2) / mat2.E
+        R_eff, m_eff = R1 * R2 / (R1 + R2), m1 * m2 / (m1 + m2)
+    else:
+        if wall is not None:
+            w: Material = get_material(wall)
+            inv_E += (1 - w.nu**2) / w.E
+        R_eff, m_eff = R1, m1
+    E_star = 1.0 / inv_E
+    return GrainContact(m_eff=m_eff, rho=4.0 / 3.0 * E_star * math.sqrt(R_eff), R_eff=R_eff,
+                        E_star=E_star)
+
+
 def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, wall=None,
                  contact_end="force", n_history=201) -> GrainImpact:
     """Two viscoelastic spheres, or a sphere on a wall, colliding head-on at speed ``v0``.
@@ -212,32 +261,12 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
         material, a half-given sphere 2, or a lambda outside the exact model's range.
     """
     contact_end = check_contact_end(contact_end)
-    R1 = si_value(R1, "length", "R1")
-    m1 = _positive(m1, "m1", "kg", "mass of sphere 1")
     A = _positive(A, "A", "s", "dissipative constant")
     v0 = si_value(v0, "speed", "v0")
-    mat1 = get_material(material1)
     if isinstance(n_history, bool) or not isinstance(n_history, int) or n_history < 2:
         raise ValueError(f"n_history must be an int >= 2, got {n_history!r}")
-    given = [x is not None for x in (R2, m2, material2)]
-    if any(given) and not all(given):
-        raise ValueError("sphere 2 needs all of R2, m2 and material2 (leave all out for a wall)")
-    if all(given) and wall is not None:
-        raise ValueError("give either sphere 2 (R2, m2, material2) or wall=, not both")
-    inv_E = (1 - mat1.nu**2) / mat1.E
-    if all(given):
-        R2 = si_value(R2, "length", "R2")
-        m2 = _positive(m2, "m2", "kg", "mass of sphere 2")
-        mat2 = get_material(material2)
-        inv_E += (1 - mat2.nu**2) / mat2.E
-        R_eff, m_eff = R1 * R2 / (R1 + R2), m1 * m2 / (m1 + m2)
-    else:
-        if wall is not None:
-            w: Material = get_material(wall)
-            inv_E += (1 - w.nu**2) / w.E
-        R_eff, m_eff = R1, m1
-    E_star = 1.0 / inv_E
-    rho = 4.0 / 3.0 * E_star * math.sqrt(R_eff)
+    c = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
+    m_eff, rho, R_eff, E_star = c.m_eff, c.rho, c.R_eff, c.E_star
     lam = viscoelastic_lambda(A, rho, m_eff, v0)
     if lam > LAMBDA_MAX:
         raise ValueError(f"A = {A!r} s, v0 = {v0!r} m/s with m_eff = {m_eff:.6g} kg and rho = {rho:.6g} "

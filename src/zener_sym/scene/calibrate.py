@@ -1,0 +1,544 @@
+"""The dissipative constant A of viscoelastic grains from measured coefficients of restitution.
+
+A grain contact with dissipative constant A [s] has Zener's lambda = A c(v0), with
+c(v0) = (rho/m_eff)^{2/5} v0^{1/5} (``zener_sym.derivation.viscoelastic``; rho, m_eff from
+:func:`~zener_sym.scene.grains.grain_contact`), and its coefficient of restitution is e(lambda) of
+Eq. (10) with the chosen end of contact. So
+
+- one measured e at one speed gives A = lam_for(e) / c(v0) (:func:`dissipation_for`);
+- pairs (v0_i, e_i) give A by least squares, min over A of sum_i ((e_i - e(A c(v0_i))) / sigma_i)^2
+  (:func:`fit_dissipation`). The fit runs in p = ln A (A stays positive, and e depends on A only
+  through lambda, so the problem is as well scaled at A = 1e-12 s as at 1 s). Its Jacobian is
+  de_i/dp = e'(lambda_i) lambda_i, e' = de/dlambda from the exact tables (not finite
+  differences), for either end of contact;
+- for Zener's plate, lambda is proportional to H^{-2} (derived Eq. 11), so the thickness that
+  gives a measured e is H lam^{1/2} / lam_for(e)^{1/2} (:func:`thickness_for`).
+
+e(v0) data constrain only the product A (rho/m_eff)^{2/5}: Young's modulus enters e only
+through rho, so it cannot be fitted beside A from e alone (a contact-time measurement would
+constrain it); it is fixed by the material given, and the fitted A scales as E*^{-2/5} with it.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..api import lam_for, summary
+from ..exact.force_end import check_contact_end
+from ..exact.solver import LAMBDA_MAX
+from ..exact.table import summary_derivative
+from .grains import GrainContact, _pos_array, grain_contact
+from .scene import Scene
+from .units import UNITS
+
+__all__ = ["dissipation_for", "thickness_for", "fit_dissipation", "DissipationFit",
+           "read_measurements", "Measurements"]
+
+#: Confidence level of the reported interval.
+CONFIDENCE = 0.95
+
+
+def _rate(contact: GrainContact, v0) -> np.ndarray:
+    """c(v0) = lambda / A = (rho/m_eff)^{2/5} v0^{1/5} [1/s]."""
+    return (contact.rho / contact.m_eff) ** 0.4 * np.asarray(v0, dtype=float) ** 0.2
+
+
+def _e_array(e, name="e") -> np.ndarray:
+    arr = np.asarray(e, dtype=float) if not isinstance(e, (bool, str)) else None
+    if arr is None or arr.dtype.kind not in "fiu":
+        raise ValueError(f"{name} (coefficient of restitution) must be a number in (0, 1], got "
+                         f"{e!r}")
+    bad = ~np.isfinite(arr) | (arr <= 0.0) | (arr > 1.0)
+    if bad.any():
+        raise ValueError(f"{name} (coefficient of restitution) must lie in (0, 1], got "
+                         f"{arr[bad].ravel()[0].item()!r}; allowed: 0 < {name} <= 1")
+    return arr
+
+
+def dissipation_for(e, v0, R1, m1, material1, *, R2=None, m2=None, material2=None, wall=None,
+                    contact_end="force"):
+    """The dissipative constant A [s] that gives the coefficient of restitution ``e`` at the
+    normal impact speed ``v0``: A = lambda(e) / ((rho/m_eff)^{2/5} v0^{1/5}).
+
+    Parameters
+    ----------
+    e : float or array_like
+        Measured coefficient(s) of restitution, 0 < e <= 1 (e = 1 gives A = 0).
+    v0 : float or array_like
+        Normal relative impact speed(s) [m/s], > 0; broadcast against ``e``.
+    R1, m1, material1, R2, m2, material2, wall
+        The grains, as in :func:`~zener_sym.grain_impact` (two spheres, or sphere 1 on a wall).
+    contact_end : {"force", "delta"}
+        End of contact (default the grains' force-free end).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        A in seconds, of the broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        For e outside (0, 1], a non-positive speed, bad grain inputs, or an e below what
+        lambda <= 1000 gives (the reachable range is in the message).
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> A = zs.dissipation_for(0.8, 1.0, "1 mm", 1e-5, "glass", wall="steel")
+    >>> r = zs.grain_impact("1 mm", 1e-5, "glass", A=A, v0=1.0, wall="steel")
+    >>> round(r.e, 12)
+    0.8
+    """
+    ce = check_contact_end(contact_end)
+    e_ = _e_array(e)
+    v_ = _pos_array(v0, "v0", "m/s", "impact speed")
+    contact = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
+    e_b, v_b = np.broadcast_arrays(e_, v_)
+    A = np.asarray(lam_for(e=e_b, contact_end=ce), dtype=float) / _rate(contact, v_b)
+    return float(A) if A.ndim == 0 else A
+
+
+def thickness_for(scene: Scene, e) -> float:
+    """The plate thickness [m] at which ``scene`` (all else kept) has the coefficient of
+    restitution ``e`` on Zener's plate (end of contact at delta = 0).
+
+    lambda = alpha m*/T with alpha proportional to H^{-2} and T independent of H (derived
+    Eq. 11), so H = H_scene (lambda_scene / lambda(e))^{1/2}. The thin-plate reading needs H
+    well above the contact radius; ``Scene(...).warnings`` says when it is not.
+
+    Parameters
+    ----------
+    scene : Scene
+        The sphere, plate material and speed (its thickness is the starting point only).
+    e : float
+        Measured coefficient of restitution, 0 < e < 1 (e = 1 needs an infinitely thick plate).
+
+    Returns
+    -------
+    float
+        The thickness H [m].
+
+    Raises
+    ------
+    ValueError
+        For e outside (0, 1) or below what lambda <= 1000 gives.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+    >>> H = zs.thickness_for(sc, 0.5)
+    >>> sc2 = zs.Scene("steel", "glass", radius="1 mm", thickness=H, v0="1 m/s")
+    >>> round(zs.summary(sc2.lam).e, 12)
+    0.5
+    """
+    if not isinstance(scene, Scene):
+        raise ValueError(f"scene must be a zener_sym.Scene, got {type(scene).__name__}")
+    e_ = float(_e_array(e))
+    if e_ == 1.0:
+        raise ValueError("e = 1 needs lambda = 0, an infinitely thick plate; allowed: 0 < e < 1")
+    lam = float(lam_for(e=e_, contact_end="delta"))
+    return scene.thickness * math.sqrt(scene.lam / lam)
+
+
+@dataclass
+class Measurements:
+    """Pairs (v0_i, e_i) read by :func:`read_measurements`: speeds in m/s, e, optional sigma_e,
+    and the unit the file gave the speeds in."""
+
+    v0: np.ndarray
+    e: np.ndarray
+    sigma: np.ndarray | None
+    unit: str
+    comments: list = field(default_factory=list)
+
+
+#: Header of the speed column: "v0" or "v", then the unit as "_m_s", " [m/s]" or " (m/s)".
+_V_HEADER = re.compile(r"^\s*(v0|v)\s*(?:\[(?P<b>[^\]]*)\]|\((?P<p>[^)]*)\)|_(?P<u>[a-z_]+))?\s*$",
+                       re.IGNORECASE)
+_E_HEADERS = ("e",)
+_SIGMA_HEADERS = ("sigma_e", "e_err", "de", "sigma")
+
+
+def _speed_unit(header: str) -> str | None:
+    m = _V_HEADER.match(header)
+    if not m:
+        return None
+    unit = m.group("b") or m.group("p") or (m.group("u") or "").replace("_", "/", 1)
+    unit = unit.strip()
+    allowed = ", ".join(UNITS["speed"])
+    if not unit:
+        raise ValueError(f"column {header.strip()!r} has no unit; name it e.g. 'v0_m_s' or "
+                         f"'v0 [m/s]' (allowed units: {allowed})")
+    if unit not in UNITS["speed"]:
+        raise ValueError(f"column {header.strip()!r}: unit {unit!r} is not one of {allowed}")
+    return unit
+
+
+def read_measurements(source) -> Measurements:
+    """Measured pairs from a CSV file (path) or text: a header naming the speed column with its
+    unit (``v0_m_s``, ``v0 [cm/s]``, ``v0 (mm/s)``; units m/s, cm/s, mm/s, km/h), the column
+    ``e``, and optionally one uncertainty column of e (``sigma_e``, ``e_err``, ``de``). Lines
+    starting with ``#`` are comments (kept in ``comments``).
+
+    Raises
+    ------
+    ValueError
+        For a missing or unit-less speed column, a missing ``e`` column, a cell that is not a
+        number, or a file that cannot be read.
+    """
+    if isinstance(source, str) and "\n" in source:
+        text, where = source, "data"
+    else:
+        try:
+            with open(source, encoding="utf-8") as fh:
+                text = fh.read()
+        except OSError as exc:
+            raise ValueError(f"cannot read {str(source)!r}: {exc.strerror or exc}") from None
+        where = str(source)
+    comments = [ln[1:].strip() for ln in text.splitlines() if ln.lstrip().startswith("#")]
+    rows = [r for r in csv.reader(io.StringIO(text))
+            if r and not r[0].lstrip().startswith("#") and any(c.strip() for c in r)]
+    if not rows:
+        raise ValueError(f"{where}: no header and no data")
+    header = rows[0]
+    iv = ie = isg = None
+    unit = None
+    for i, h in enumerate(header):
+        name = h.strip().lower()
+        u = _speed_unit(h)
+        if u is not None:
+            if iv is not None:
+                raise ValueError(f"{where}: two speed columns ({header[iv].strip()!r}, "
+                                 f"{h.strip()!r}); give one")
+            iv, unit = i, u
+        elif name in _E_HEADERS:
+            ie = i
+        elif name in _SIGMA_HEADERS:
+            isg = i
+    if iv is None:
+        raise ValueError(f"{where}: no speed column; the header needs e.g. 'v0_m_s' or "
+                         f"'v0 [m/s]' (got {', '.join(repr(h.strip()) for h in header)})")
+    if ie is None:
+        raise ValueError(f"{where}: no column 'e' (got "
+                         f"{', '.join(repr(h.strip()) for h in header)})")
+    cols = {k: [] for k in ("v", "e", "s")}
+    for n, row in enumerate(rows[1:], start=2):
+        for key, idx in (("v", iv), ("e", ie), ("s", isg)):
+            if idx is None:
+                continue
+            try:
+                cols[key].append(float(row[idx]))
+            except (IndexError, ValueError):
+                cell = row[idx] if idx < len(row) else ""
+                raise ValueError(f"{where}: data row {n - 1}, column {header[idx].strip()!r}: "
+                                 f"{cell!r} is not a number") from None
+    if not cols["v"]:
+        raise ValueError(f"{where}: a header but no data rows")
+    factor = UNITS["speed"][unit]
+    return Measurements(v0=np.array(cols["v"]) * factor, e=np.array(cols["e"]),
+                        sigma=np.array(cols["s"]) if isg is not None else None, unit=unit,
+                        comments=comments)
+
+
+@dataclass
+class DissipationFit:
+    """Result of :func:`fit_dissipation`.
+
+    Attributes
+    ----------
+    A : float
+        Fitted dissipative constant [s].
+    A_se : float
+        Its standard error [s] (A times the standard error of ln A).
+    A_ci : tuple of float
+        The 95 % confidence interval of A [s], exp(ln A -+ q se(ln A)) with q Student's t
+        quantile (n - 1 degrees of freedom) when the scatter is estimated from the residuals, the
+        normal quantile when ``sigma`` was given.
+    v0, e, sigma : numpy.ndarray
+        The data (speeds in m/s); ``sigma`` None when not given.
+    lam : numpy.ndarray
+        Zener's lambda of each point at the fitted A.
+    e_fit, residuals : numpy.ndarray
+        e of the model at the fitted A and e - e_fit.
+    s : float
+        Scatter of e: sqrt(sum r_i^2 / (n - 1)) (r weighted by 1/sigma when given: then s = 1
+        for data scattered as stated).
+    contact_end : str
+    contact : GrainContact
+        m_eff, rho, R_eff, E* of the grains.
+    dof : int
+        n - 1.
+    nfev : int
+        Model evaluations of the least-squares solver.
+    sigma_from : str
+        ``"given"`` or ``"residuals"``: where the error scale came from.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
+    ...                          wall="steel")
+    >>> f"{fit.A:.3g} s", fit.dof, fit.sigma_from
+    ('2.4e-07 s', 2, 'residuals')
+    >>> p = fit.predict(5.0)
+    >>> p["e_low"] < p["e"] < p["e_high"]
+    True
+    """
+
+    A: float
+    A_se: float
+    A_ci: tuple
+    v0: np.ndarray
+    e: np.ndarray
+    sigma: np.ndarray | None
+    lam: np.ndarray
+    e_fit: np.ndarray
+    residuals: np.ndarray
+    s: float
+    contact_end: str
+    contact: GrainContact
+    dof: int
+    nfev: int
+    sigma_from: str
+    se_lnA: float = field(repr=False)
+    quantile: float = field(repr=False)
+    confidence: float = CONFIDENCE
+
+    def predict(self, v0) -> dict:
+        """e and the contact time at other speeds, with the e interval that A's interval gives.
+
+        Parameters
+        ----------
+        v0 : float or array_like
+            Normal impact speed(s) [m/s], > 0.
+
+        Returns
+        -------
+        dict
+            ``v0``, ``lam``, ``e``, ``e_low``, ``e_high`` (e at the upper and lower end of A's
+            interval; e falls as A grows), ``contact_duration_s`` (T tau_d, T =
+            (m_eff/rho)^{2/5} v0^{-1/5}), each an array (a float for a scalar ``v0``).
+
+        Raises
+        ------
+        ValueError
+            For a non-positive speed, or one at which lambda would exceed 1000.
+        """
+        v = _pos_array(v0, "v0", "m/s", "impact speed")
+        c = _rate(self.contact, v)
+        lam_hi = self.A_ci[1] * c
+        if np.any(lam_hi > LAMBDA_MAX):
+            raise ValueError(f"at v0 = {float(np.max(v)):.6g} m/s the upper end of A's interval "
+                             f"gives lambda = {float(np.max(lam_hi)):.6g} > {LAMBDA_MAX:g}, the "
+                             f"exact model's range")
+        lam = self.A * c
+        s = summary(lam, model="exact", contact_end=self.contact_end)
+        lo = summary(lam_hi, model="exact", contact_end=self.contact_end).e
+        hi = summary(self.A_ci[0] * c, model="exact", contact_end=self.contact_end).e
+        T = (self.contact.m_eff / self.contact.rho) ** 0.4 * v ** -0.2
+        out = {"v0": v, "lam": lam, "e": s.e, "e_low": lo, "e_high": hi,
+               "contact_duration_s": T * np.asarray(s.tau_d)}
+        if np.ndim(v) == 0:
+            out = {k: float(x) for k, x in out.items()}
+        return out
+
+    def summary(self) -> str:
+        """The fit as text a person reads."""
+        n = self.v0.size
+        lines = [
+            f"dissipative constant A = {self.A:.6g} s  (standard error {self.A_se:.3g} s, "
+            f"{self.A_se / self.A:.2%})",
+            f"{self.confidence:.0%} confidence interval: [{self.A_ci[0]:.6g}, "
+            f"{self.A_ci[1]:.6g}] s",
+            f"{n} points, v0 {self.v0.min():.4g} .. {self.v0.max():.4g} m/s, "
+            f"lambda {self.lam.min():.4g} .. {self.lam.max():.4g}; contact end "
+            f"{self.contact_end!r}",
+            (f"scatter of e: {self.s:.3g} (rms of the residuals, {self.dof} degrees of freedom; "
+             f"interval from Student's t)" if self.sigma_from == "residuals" else
+             f"weighted scatter: {self.s:.3g} (1 when the data scatter as the sigma given; "
+             f"interval from the sigma given)"),
+            f"grains: m_eff = {self.contact.m_eff:.6g} kg, rho = {self.contact.rho:.6g} "
+            f"N/m^(3/2), R_eff = {self.contact.R_eff:.6g} m, E* = {self.contact.E_star:.6g} Pa",
+            "",
+            f"{'v0 [m/s]':>12} {'e':>9} {'e fit':>9} {'residual':>10} {'lambda':>10}",
+        ]
+        for v, e, ef, r, la in zip(self.v0, self.e, self.e_fit, self.residuals, self.lam):
+            lines.append(f"{v:12.6g} {e:9.5f} {ef:9.5f} {r:+10.2e} {la:10.4g}")
+        return "\n".join(lines)
+
+    def __str__(self) -> str:
+        return self.summary()
+
+    def plot(self, path=None, *, title=None, data_label="measured"):
+        """Chart: the data (with error bars when sigma was given), the fitted e(v0) and the band
+        of A's interval; below, the residuals. Needs matplotlib (the ``plot`` extra).
+
+        Parameters
+        ----------
+        path : str or Path, optional
+            Where to save (its suffix picks the format); the figure is returned either way.
+        title : str, optional
+        data_label : str
+            Legend entry of the points (default ``"measured"``).
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+        """
+        from ..plot.calibration import fit_chart
+
+        return fit_chart(self, path=path, title=title, data_label=data_label)
+
+
+def _trend(v0, e, w) -> float:
+    """Weighted least-squares slope of e against ln v0."""
+    x = np.log(v0)
+    xm = np.sum(w * x) / np.sum(w)
+    em = np.sum(w * e) / np.sum(w)
+    return float(np.sum(w * (x - xm) * (e - em)) / np.sum(w * (x - xm) ** 2))
+
+
+def fit_dissipation(v0, e, R1, m1, material1, *, sigma=None, R2=None, m2=None, material2=None,
+                    wall=None, contact_end="force") -> DissipationFit:
+    """Fit the dissipative constant A [s] to measured pairs (v0_i, e_i) by least squares.
+
+    Minimises sum_i ((e_i - e(lambda_i)) / sigma_i)^2 over A, lambda_i = A (rho/m_eff)^{2/5}
+    v0_i^{1/5}, with e(lambda) of the exact model and the Jacobian from its tables (module
+    docstring). Young's modulus is fixed by the materials given: e(v0) data alone cannot
+    separate it from A.
+
+    Parameters
+    ----------
+    v0, e : array_like
+        Normal impact speeds [m/s] (> 0) and coefficients of restitution (0 < e <= 1), equal
+        lengths.
+    R1, m1, material1, R2, m2, material2, wall
+        The grains, as in :func:`~zener_sym.grain_impact`.
+    sigma : float or array_like, optional
+        Standard deviation of each e (> 0). Given, the residuals are weighted by 1/sigma and the
+        interval uses it as stated; left out, the scatter is estimated from the residuals
+        (Student's t, n - 1 degrees of freedom; needs two points or more).
+    contact_end : {"force", "delta"}
+        End of contact (default the grains' force-free end).
+
+    Returns
+    -------
+    DissipationFit
+
+    Raises
+    ------
+    ValueError
+        For unequal lengths, e outside (0, 1], a non-positive speed or sigma, fewer points than
+        the fit needs, e that all equal 1 (A = 0), e that rises with speed (no A fits: the
+        model's e falls with speed for every A > 0), e below what lambda <= 1000 gives, or a
+        solver that does not converge.
+
+    Examples
+    --------
+    >>> import numpy as np, zener_sym as zs
+    >>> v = np.array([0.5, 1.0, 2.0, 4.0])
+    >>> A = 2e-7
+    >>> e = [zs.grain_impact("1 mm", 1e-5, "glass", A=A, v0=x, wall="steel").e for x in v]
+    >>> fit = zs.fit_dissipation(v, e, "1 mm", 1e-5, "glass", wall="steel")
+    >>> abs(fit.A / A - 1) < 1e-9
+    True
+    """
+    from scipy.optimize import least_squares
+    from scipy.stats import norm, t as student_t
+
+    ce = check_contact_end(contact_end)
+    v_ = np.atleast_1d(_pos_array(v0, "v0", "m/s", "impact speed")).astype(float)
+    e_ = np.atleast_1d(_e_array(e)).astype(float)
+    if v_.ndim != 1 or e_.ndim != 1:
+        raise ValueError(f"v0 and e must be 1-d sequences, got shapes {v_.shape} and {e_.shape}")
+    if v_.size != e_.size:
+        raise ValueError(f"v0 and e must have equal lengths, got {v_.size} speeds and "
+                         f"{e_.size} values of e")
+    if sigma is not None:
+        s_ = np.atleast_1d(_pos_array(sigma, "sigma", "units of e", "standard deviation of e"))
+        if s_.size == 1:
+            s_ = np.full(e_.size, float(s_.ravel()[0]))
+        if s_.shape != e_.shape:
+            raise ValueError(f"sigma must be one number or one per point ({e_.size}), got "
+                             f"{s_.size}")
+    else:
+        s_ = None
+    n_min = 1 if s_ is not None else 2
+    if e_.size < n_min:
+        raise ValueError(f"{e_.size} point(s) for 1 parameter (A): the fit needs at least "
+                         f"{n_min} ({'with' if s_ is not None else 'without'} sigma; without it "
+                         f"the scatter comes from the residuals)")
+    if np.all(e_ == 1.0):
+        raise ValueError("every e is 1: the contact is elastic, A = 0; nothing to fit")
+    w = np.ones_like(e_) if s_ is None else 1.0 / s_**2
+    if np.unique(v_).size >= 2:
+        slope = _trend(v_, e_, w)
+        if slope > 0.0:
+            raise ValueError(f"e rises with speed (least-squares slope of e against ln v0: "
+                             f"{slope:+.3g}); the viscoelastic e falls with speed for every "
+                             f"A > 0, so no A fits these data")
+    contact = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
+    c = _rate(contact, v_)
+    inv_s = np.ones_like(e_) if s_ is None else 1.0 / s_
+    p_max = math.log(LAMBDA_MAX / float(c.max()))
+
+    # start: the median of the one-point inversions (each e clipped into the reachable range)
+    e_floor = float(summary(LAMBDA_MAX, model="exact", contact_end=ce).e)
+    lam0 = np.asarray(lam_for(e=np.clip(e_, e_floor * (1 + 1e-12), 1.0), contact_end=ce))
+    a0 = lam0 / c
+    p0 = math.log(float(np.median(a0[a0 > 0]))) if np.any(a0 > 0) else p_max - 10.0
+    p0 = min(p0, p_max - 1e-9)
+
+    def lams(p):  # at the bound exp(ln(1000/c)) c may round 1 ulp above 1000
+        return np.minimum(math.exp(p[0]) * c, LAMBDA_MAX)
+
+    def residuals(p):
+        lam = lams(p)
+        return (e_ - np.asarray(summary(lam, model="exact", contact_end=ce).e)) * inv_s
+
+    def jacobian(p):
+        lam = lams(p)
+        de = summary_derivative(lam, field="e", contact_end=ce)
+        return (-de * lam * inv_s)[:, None]
+
+    sol = least_squares(residuals, [p0], jac=jacobian, bounds=([-np.inf], [p_max]),
+                        method="trf", x_scale=[1.0], xtol=1e-15, ftol=1e-15, gtol=1e-15,
+                        max_nfev=200)
+    if sol.status <= 0:
+        raise ValueError(f"the fit did not converge ({sol.message}); A reached "
+                         f"{math.exp(sol.x[0]):.6g} s after {sol.nfev} evaluations")
+    p = float(sol.x[0])
+    if sol.active_mask[0] != 0 or p_max - float(sol.x[0]) < 1e-6:
+        raise ValueError(f"these e are lower than lambda <= {LAMBDA_MAX:g} gives at "
+                         f"v0 = {float(v_[np.argmax(c)]):.6g} m/s: the best A is at the "
+                         f"model's bound {math.exp(p_max):.6g} s")
+    A = math.exp(p)
+    lam = lams([p])
+    e_fit = np.asarray(summary(lam, model="exact", contact_end=ce).e, dtype=float)
+    r = (e_ - e_fit)
+    rw = r * inv_s
+    J = jacobian([p])[:, 0]
+    JtJ = float(J @ J)
+    if not JtJ > 0.0:
+        raise ValueError("the data do not constrain A (de/dA = 0 at every point)")
+    dof = e_.size - 1
+    if s_ is None:
+        scat = math.sqrt(float(rw @ rw) / dof)
+        se = scat / math.sqrt(JtJ)
+        q = float(student_t.ppf(0.5 + CONFIDENCE / 2, dof))
+    else:
+        scat = math.sqrt(float(rw @ rw) / max(dof, 1))  # one point: fitted exactly, 0
+        se = 1.0 / math.sqrt(JtJ)
+        q = float(norm.ppf(0.5 + CONFIDENCE / 2))
+    ci = (A * math.exp(-q * se), A * math.exp(q * se))
+    return DissipationFit(A=A, A_se=A * se, A_ci=ci, v0=v_, e=e_, sigma=s_, lam=lam, e_fit=e_fit,
+                          residuals=r, s=scat, contact_end=ce, contact=contact, dof=dof,
+                          nfev=int(sol.nfev), sigma_from="given" if s_ is not None else "residuals",
+                          se_lnA=se, quantile=q)

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from zener_sym.numerics import chebyshev, elementary, integrate
-from zener_sym.generated import ham1_numpy as k
+from zener_sym.ham.runtime_numpy import ham1 as k
 
 
 def test_matches_per_point_quadrature_of_the_first_order_force():

@@ -9,8 +9,8 @@ import pytest
 
 import zener_sym as zs
 from zener_sym.codegen import inputs_hash
-from zener_sym.generated import ham1_mpmath as m1
-from zener_sym.generated import ham1_numpy as h1
+from zener_sym.ham.runtime_mpmath import ham1 as m1
+from zener_sym.ham.runtime_numpy import ham1 as h1
 from zener_sym.generated import ham1_table
 from zener_sym.ham import table, table_build
 

@@ -112,7 +112,7 @@ def test_fields_are_honoured(model):
 
 
 def test_ham0_series_impulse_matches_the_generated_kernel():
-    from zener_sym.generated import ham0_numpy as h0
+    from zener_sym.ham.runtime_numpy import ham0 as h0
 
     lam = np.linspace(0.0, 2.43, 40)[:, None]
     tau = np.linspace(0.0, 1.0, 50)[None, :] * h0.summary(lam)["tau_d"] * 1.1
@@ -136,7 +136,7 @@ def test_line_blocks_cover_the_grid_once():
 def test_ham0_history_by_blocks_matches_the_generated_kernels(shape):
     """ham0's block-by-block history (lines longer than a block, one lambda per point, a small
     grid) against the generated delta0 and impulse (quadrature) at every point."""
-    from zener_sym.generated import ham0_numpy as h0
+    from zener_sym.ham.runtime_numpy import ham0 as h0
 
     rng = np.random.default_rng(6)
     if len(shape) == 2 and shape[0] == 1:

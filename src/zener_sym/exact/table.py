@@ -87,7 +87,8 @@ def _tables():
         ga = np.where(log, np.log(np.where(log, edges[:-1], 1.0)), edges[:-1])
         gb = np.where(log, np.log(edges[1:]), edges[1:])
     return {"layout": layout, "LAM_MIN": float(edges[0]), "LAM_MAX": float(edges[-1]),
-            "HISTORY_LAM_MAX": float(layout.HISTORY_TO), "edges": edges, "log": log, "ga": ga, "gb": gb,
+            "HISTORY_LAM_MAX": float(layout.HISTORY_TO), "edges": edges, "log": log, "ga": ga,
+            "gb": gb,
             "summary_keys": tuple(t.SUMMARY),
             # [lambda piece, field, degree], zero-padded: all fields in one pass
             "summary": _stack_summary([_pad_rows([v[p] for v in t.SUMMARY.values()])

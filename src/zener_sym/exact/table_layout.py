@@ -30,7 +30,7 @@ class Layout:
     HISTORY_TO: float
     #: Time scale of piece A's logarithmic stretch at tau_dc (see the builder).
     C_STRETCH: float
-    #: lambda <= LOG_FROM: time scale of piece A's logarithmic stretch at tau_w0, C_END (1 + lambda).
+    #: lambda <= LOG_FROM: piece A's logarithmic stretch at tau_w0 has time scale C_END (1 + lambda).
     C_END: float
     #: lambda > LOG_FROM: tau_s = tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)).
     S_ORBIT: float

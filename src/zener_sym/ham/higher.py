@@ -183,7 +183,7 @@ def check_formulation(formulation) -> str:
 
 # ------------------------------------------------------------------ the linear operator
 def _lam_params(lam):
-    from ..generated import ham1_numpy
+    from .runtime_numpy import ham1 as ham1_numpy
 
     lam = float(lam)
     if not (math.isfinite(lam) and 0.0 <= lam < ham1_numpy.LAM_CRIT):

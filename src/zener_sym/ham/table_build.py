@@ -60,7 +60,7 @@ KINDS = ("lam", "sqrt")
 
 
 def lam_crit() -> float:
-    from ..generated import ham1_numpy
+    from .runtime_numpy import ham1 as ham1_numpy
 
     return float(ham1_numpy.LAM_CRIT)
 
@@ -79,7 +79,7 @@ def continuation_lambda() -> float:
     (below it tau_d > pi/omega0). Brent's method on the reference, to full precision."""
     from scipy.optimize import brentq
 
-    from ..generated import ham1_numpy
+    from .runtime_numpy import ham1 as ham1_numpy
 
     def g(x):
         return float(np.exp(reference(x)["log_tau_d"][0])) - float(np.pi / ham1_numpy.params(x)[2])
@@ -116,14 +116,14 @@ def build_tables() -> dict:
 
 def input_files() -> list[pathlib.Path]:
     """The sources the table is built from (its inputs hash): this builder, the reference it
-    samples (``spectral``, the numerical primitives of ``zener_sym.numerics``) and the generated
-    ham1 kernels."""
+    samples (``spectral``, the numpy kernels' runtime, the numerical primitives of
+    ``zener_sym.numerics``) and the generated HAM formulas it calls."""
     from ..codegen import generated_dir
 
     here = pathlib.Path(__file__).resolve().parent
-    files = [here / n for n in ("table_build.py", "spectral.py")]
+    files = [here / n for n in ("table_build.py", "spectral.py", "runtime_numpy.py")]
     files += sorted((here.parent / "numerics").glob("*.py"))
-    files.append(generated_dir() / "ham1_numpy.py")
+    files += [generated_dir() / n for n in ("ham0_numpy.py", "ham1_numpy.py")]
     return files
 
 

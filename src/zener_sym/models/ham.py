@@ -25,11 +25,14 @@ _BLOCK = 16384
 
 
 def _gen(name):
-    """A generated module, imported on first use: ``zener-sym generate`` must run (and rewrite
-    generated/) even when the committed kernels are stale or broken."""
+    """The HAM kernels ``name`` ("ham0_numpy", "ham1_mpmath", ...: ``ham0``/``ham1`` of
+    ``zener_sym.ham.runtime_numpy`` or ``runtime_mpmath``), imported on first use:
+    ``zener-sym generate`` must run (and rewrite generated/) even when the committed kernels
+    are stale or broken."""
     import importlib
 
-    return importlib.import_module(f"zener_sym.generated.{name}")
+    order, backend = name.split("_")
+    return getattr(importlib.import_module(f"zener_sym.ham.runtime_{backend}"), order)
 
 
 def _backend(options):

@@ -93,10 +93,10 @@ def test_cli_lists_warnings_in_table(capsys):
     assert rc == 0 and "WARNING ham-bound" in text and "WARNING finite-plate" in text
 
 
-def test_report_has_scene_section():
+def test_report_has_scene_section(tmp_path):
     names = [n for n, _ in report.SECTIONS]
     assert "scene" in names
-    md = dict(report.SECTIONS)["scene"]()
+    md = dict(report.SECTIONS)["scene"](tmp_path)
     assert "0.162982" in md  # lambda of the Table 1 pair, R 0.9 mm, H 0.5 mm, 1 m/s
 
 

@@ -1,5 +1,4 @@
 """Eq. (10) as the viscoelastic grain contact: the mapping, the force-free end, the grain front end."""
-import math
 
 import mpmath
 import numpy as np

@@ -119,7 +119,7 @@ def chart(rows, curves, path, lam_curves=1.01) -> None:
     """Four panels in the package style: squared residual and tau_d error against order (both
     formulations, every lambda, optimal and paper c0), and the c0-curves of the squared
     residual and of tau_d."""
-    from ..plot.style import LAMBDA_COLORS, legend_outside, rc, save
+    from ..plot.style import LAMBDA_COLORS, legend_outside, rc
 
     dashes = {"paper": "--", "strained": "-"}
     with rc() as plt:

@@ -34,7 +34,7 @@ LAYERS = (
     # the package facade (zener_sym/__init__.py) re-exports the scene layer
     ("scene", ("zener_sym.scene", "zener_sym", "zener_sym.plot")),
     ("report/bench/audit", ("zener_sym.report", "zener_sym.bench", "zener_sym.audit",
-                            "zener_sym.figures")),
+                            "zener_sym.figures", "zener_sym.artefacts")),
     ("cli", ("zener_sym.cli", "zener_sym.__main__")),
 )
 

@@ -223,7 +223,7 @@ def test_lookup_table_bad_input(capsys):
 
 def test_peers_table_in_docs_is_fresh():
     """docs/viscoelastic.md's peers block is what zener_sym.report.peers measures now
-    (regenerate: python -m zener_sym.report.peers --write docs/viscoelastic.md)."""
+    (regenerate: zener-sym regen peers)."""
     import pathlib
 
     from zener_sym.report import peers

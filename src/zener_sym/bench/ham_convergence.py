@@ -193,6 +193,16 @@ def write(root=None, with_chart=True) -> list:
     return written
 
 
+def fresh_texts(root=None, rows=None) -> dict:
+    """``{path relative to root: fresh text}`` of the table's document and the CSV (the
+    artefact ``ham-convergence`` of ``zener-sym regen``)."""
+    root = _root(root)
+    rows = study() if rows is None else rows
+    md = (root / "docs" / "ham_convergence.md").read_text()
+    return {"docs/ham_convergence.md": _splice(md, render_table(rows)),
+            "docs/data/ham_convergence.csv": render_csv(rows)}
+
+
 def check(root=None, rows=None) -> list:
     """Diff lines between the committed table and CSV and a fresh run; empty when fresh."""
     root = _root(root)

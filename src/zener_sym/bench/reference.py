@@ -75,6 +75,35 @@ def load() -> dict:
     return compute()
 
 
+def dumps(ref: dict) -> str:
+    """The reference as the cache's text (stable JSON)."""
+    return json.dumps(ref, indent=1, sort_keys=True) + "\n"
+
+
 def write_cache(ref: dict) -> None:
     CACHE.parent.mkdir(exist_ok=True)
-    CACHE.write_text(json.dumps(ref, indent=1, sort_keys=True) + "\n")
+    CACHE.write_text(dumps(ref))
+
+
+#: Relative tolerance between two mpmath references of the same inputs: both carry 30 digits,
+#: stored as float64 (one rounding each).
+CHECK_RTOL = 1e-13
+
+
+def compare(old: dict, new: dict, rtol: float = CHECK_RTOL) -> list[str]:
+    """Differences that make the reference ``old`` stale relative to ``new``: other inputs or
+    source, or a value beyond ``rtol`` (relative to the largest force for the history)."""
+    bad = [f"{k}: {old.get(k)!r} -> {new.get(k)!r}" for k in ("lambdas", "n_tau", "source")
+           if old.get(k) != new.get(k)]
+    if bad:
+        return bad
+    for lam in new["summary"]:
+        for q in QUANTITIES:
+            a, b = old["summary"].get(lam, {}).get(q), new["summary"][lam][q]
+            if a is None or not abs(a - b) <= rtol * max(abs(b), 1e-300):
+                bad.append(f"summary {lam} {q}: {a!r} -> {b!r}")
+        for key in ("tau", "force"):
+            a, b = np.asarray(old[key].get(lam, []), float), np.asarray(new[key][lam], float)
+            if a.shape != b.shape or np.max(np.abs(a - b)) > rtol * np.max(np.abs(b)):
+                bad.append(f"{key} {lam}: differs beyond {rtol:g}")
+    return bad

@@ -170,3 +170,18 @@ def test_every_artefact_is_listed_once_and_can_be_found():
     with pytest.raises(ValueError, match="allowed: kernels, formulas"):
         artefacts.get("nope")
     assert regen.run(list_only=True, out=lambda *a: None) == 0
+
+
+def test_artefacts_in_the_repository_need_a_checkout(monkeypatch, tmp_path, capsys):
+    """From an installed copy (no checkout), naming an artefact that lives in the repository is a
+    usage error said up front, before any work."""
+    from zener_sym.cli import _checkout
+
+    monkeypatch.delenv(_checkout.ENV)
+    fake = tmp_path / "site-packages" / "zener_sym" / "cli" / "_checkout.py"
+    fake.parent.mkdir(parents=True)
+    monkeypatch.setattr(_checkout, "__file__", str(fake))
+    for argv in (["regen", "--check", "kernels"], ["regen", "audit"], ["regen"]):
+        assert cli.main(argv) == 2, argv
+        err = capsys.readouterr().err
+        assert "needs a source checkout" in err and err.count("\n") == 1, err

@@ -47,27 +47,31 @@ def run(names=(), check: bool = False, list_only: bool = False, out=print) -> in
             chosen = [a for a in chosen if not a.needs_checkout]
             out(f"skipped (they need a source checkout): {', '.join(skipped)}")
     status = 0
-    total = time.perf_counter()
+    total, total_cpu = time.perf_counter(), time.process_time()
     for a in chosen:
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         if check:
             problems = artefacts.check(a, root)
-            dt = time.perf_counter() - t0
+            took = _took(t0, c0)
             if problems:
                 status = 1
-                out(f"{a.name}: STALE ({dt:.1f} s); run `zener-sym regen {a.name}` and commit")
+                out(f"{a.name}: STALE ({took}); run `zener-sym regen {a.name}` and commit")
                 for p in problems:
                     out("  " + p)
             else:
-                out(f"{a.name}: up to date ({dt:.1f} s)")
+                out(f"{a.name}: up to date ({took})")
         else:
             written = artefacts.build(a, root)
-            dt = time.perf_counter() - t0
-            out(f"{a.name}: wrote {len(written)} file(s) in {dt:.1f} s"
-                + (": " + ", ".join(str(p) for p in written) if written else " (all unchanged)"))
-    out(f"{len(chosen)} artefact(s) {'checked' if check else 'rebuilt'} in "
-        f"{time.perf_counter() - total:.0f} s" + (", some STALE" if status else ""))
+            out(f"{a.name}: wrote {len(written)} file(s) ({_took(t0, c0)})"
+                + (": " + ", ".join(str(p) for p in written) if written else ", all unchanged"))
+    out(f"{len(chosen)} artefact(s) {'checked' if check else 'rebuilt'} "
+        f"({_took(total, total_cpu)})" + (", some STALE" if status else ""))
     return status
+
+
+def _took(t0: float, c0: float) -> str:
+    """Wall and CPU time since ``t0``/``c0``: on a shared machine the wall time says little."""
+    return f"{time.perf_counter() - t0:.1f} s, {time.process_time() - c0:.1f} s CPU"
 
 
 def add_parser(sub) -> None:

@@ -22,7 +22,7 @@ O(lambda^(3/2)) for a time O(lambda), and its impulse gives e_force - e_delta = 
 
 The coefficients of the hierarchy are computed numerically, to 50 digits, as the Taylor
 coefficients of these analytic functions, by two routes that share only the Taylor integrator of
-this module (jets in the style of ``zener_sym.exact_mp``, which this module must not import):
+this module (jets in the style of ``zener_sym.exact.mp``, which this module must not import):
 
 1. Cauchy's integral on a circle |lambda| = r1 (|mu| = r1 for the grains), M1 points, in complex
    arithmetic (the integrator runs on complex lambda along the same fixed phases);
@@ -126,7 +126,7 @@ def _dpoly(c):
 
 
 def _hmax(c, N):
-    """Step bound rho e^-2 from the last six coefficients (as in zener_sym.exact_mp)."""
+    """Step bound rho e^-2 from the last six coefficients (as in zener_sym.exact.mp)."""
     rho = None
     for ci in c:
         for j in range(N - 5, N + 1):

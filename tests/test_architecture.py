@@ -33,7 +33,7 @@ LAYERS = (
     # the package facade (zener_sym/__init__.py) re-exports the scene layer
     ("scene", ("zener_sym.scene", "zener_sym", "zener_sym.plot")),
     ("report/bench/audit", ("zener_sym.report", "zener_sym.bench", "zener_sym.audit",
-                            "zener_sym.figures")),
+                            "zener_sym.figures", "zener_sym.artefacts")),
     ("cli", ("zener_sym.cli", "zener_sym.__main__")),
 )
 
@@ -61,11 +61,21 @@ def _known(name: str) -> str | None:
     return None
 
 
-def imports_of(module: str, path: pathlib.Path) -> set:
-    """Project modules that ``module`` imports anywhere in its source."""
-    tree = ast.parse(path.read_text(), str(path))
-    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
-    found = set()
+def _is_call(node, attr: str) -> bool:
+    return (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            and node.func.attr == attr and bool(node.args))
+
+
+def read_imports(module: str, source: str, is_package: bool = False) -> tuple:
+    """``(found, unknown)``: the project modules that ``module`` (whose text is ``source``)
+    imports anywhere, and the ``zener_sym.*`` names it imports that are no module of the
+    checkout (a misspelt or renamed module, which would otherwise pass unseen as its parent
+    package). ``importlib.import_module`` with a literal name counts as an import;
+    ``importlib.util.find_spec`` with a literal name (which locates a module without importing
+    it) is checked for unknown names only."""
+    tree = ast.parse(source)
+    package = module if is_package else module.rpartition(".")[0]
+    found, unknown = set(), set()
     for node in ast.walk(tree):
         names = []
         if isinstance(node, ast.Import):
@@ -80,23 +90,36 @@ def imports_of(module: str, path: pathlib.Path) -> set:
             # "from pkg import mod" imports the submodule; "from mod import name" the module
             names = [f"{base}.{a.name}" if f"{base}.{a.name}" in MODULES else base
                      for a in node.names]
-        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-              and node.func.attr == "import_module" and node.args
+        elif ((_is_call(node, "import_module") or _is_call(node, "find_spec"))
               and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str)):
             names = [node.args[0].value]
-        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-              and node.func.attr == "import_module" and node.args
-              and isinstance(node.args[0], ast.JoinedStr) and node.args[0].values
-              and isinstance(node.args[0].values[0], ast.Constant)):
+            if node.func.attr == "find_spec":
+                if names[0].startswith("zener_sym") and names[0] not in MODULES:
+                    unknown.add(names[0])
+                continue
+        elif (_is_call(node, "import_module") and isinstance(node.args[0], ast.JoinedStr)
+              and node.args[0].values and isinstance(node.args[0].values[0], ast.Constant)):
             names = [node.args[0].values[0].value.rstrip(".")]  # f"zener_sym.generated.{name}"
         for n in names:
-            target = _known(n) if n.startswith("zener_sym") else None
+            if n != "zener_sym" and not n.startswith("zener_sym."):
+                continue
+            if n not in MODULES:
+                unknown.add(n)
+            target = _known(n)
             if target and target != module:
                 found.add(target)
-    return found
+    return found, unknown
+
+
+def imports_of(module: str, path: pathlib.Path) -> set:
+    """Project modules that ``module`` imports anywhere in its source."""
+    return read_imports(module, path.read_text(), path.name == "__init__.py")[0]
 
 
 GRAPH = {m: imports_of(m, p) for m, p in MODULES.items()}
+#: zener_sym.* names imported that are no module of the checkout, per importing module.
+UNKNOWN = {m: u for m, p in MODULES.items()
+           if (u := read_imports(m, p.read_text(), p.name == "__init__.py")[1])}
 
 
 def layer_of(module: str) -> int:
@@ -143,6 +166,23 @@ def test_the_reader_sees_the_modules():
     assert "zener_sym.generated.exact_table" in GRAPH["zener_sym.exact.table"]  # importlib
     assert "zener_sym.generated.ham1_table" in GRAPH["zener_sym.ham.table"]  # importlib
     assert "zener_sym.derivation.registry" in GRAPH["zener_sym.cli.derive"]  # inside a function
+
+
+def test_every_imported_project_name_is_a_module():
+    assert not UNKNOWN, "\n".join(f"{m} imports unknown {sorted(u)}" for m, u in sorted(UNKNOWN.items()))
+
+
+def test_unknown_names_are_caught():
+    """The reader reports a zener_sym.* name that is no module (here the old name of exact.mp,
+    which bench/reference.py once looked for), in each form it reads."""
+    src = ("import importlib\nimport importlib.util\nfrom zener_sym.exact_mp import solve\n"
+           "import zener_sym.nowhere\nfrom ..exact_mp2 import x\n"
+           "importlib.util.find_spec('zener_sym.exact_mp3')\n"
+           "importlib.import_module('zener_sym.exact_mp4')\nfrom ..exact import mp\n")
+    found, unknown = read_imports("zener_sym.bench.fake", src)
+    assert unknown == {"zener_sym.exact_mp", "zener_sym.nowhere", "zener_sym.exact_mp2",
+                       "zener_sym.exact_mp3", "zener_sym.exact_mp4"}
+    assert "zener_sym.exact.mp" in found
 
 
 def test_no_import_cycle():

@@ -26,7 +26,8 @@ def test_every_model_fails_loudly_or_not_at_all(name):
 
 
 def test_measure_ranks_tolerances():
-    small = {k: v for k, v in reference.compute(lambdas=(0.0, 1.01), n_tau=11).items()}
+    small = {k: v for k, v in reference.compute(lambdas=(0.0, 1.01), n_tau=11,
+                                                   source="scipy").items()}
     cat = [methods._phases("DOP853", 1e-3), methods._phases("DOP853", 1e-10), methods._naive("DOP853", 1e-8)]
     rows = workprecision.measure(cat, small, quick=True, log=lambda *a: None)
     err = {(r["method"], r["quantity"]): r["max_rel_error"] for r in rows}
@@ -35,6 +36,21 @@ def test_measure_ranks_tolerances():
     assert err[("exact DOP853 rtol=1e-10", "force_history")] < 1e-7
     assert err[("exact DOP853 rtol=1e-10", "e")] < err[("exact DOP853 rtol=1e-03", "e")]
     assert all(r["seconds_per_lambda"] > 0 for r in rows)
+
+
+def test_reference_build_takes_the_mpmath_path():
+    """``zener-sym bench --build-reference`` writes what ``compute()`` returns by default: it must
+    come from exact.mp (it once looked for the module under an old name and silently wrote a
+    scipy reference labelled by nothing but its source field). One lambda at 15 digits, checked
+    against the scipy path, an independent integrator."""
+    ref = reference.compute(lambdas=(0.5,), n_tau=3, dps=15)
+    assert ref["source"] == "zener_sym.exact.mp at dps=15"
+    sci = reference.compute(lambdas=(0.5,), n_tau=3, source="scipy")
+    assert "scipy" in sci["source"]
+    for q in reference.QUANTITIES:
+        assert ref["summary"]["0.5"][q] == pytest.approx(sci["summary"]["0.5"][q], rel=1e-10), q
+    with pytest.raises(ValueError, match="allowed: 'mpmath', 'scipy'"):
+        reference.compute(source="exact_mp")
 
 
 def test_stability_classes():

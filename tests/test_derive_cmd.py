@@ -70,10 +70,10 @@ def test_cli_check_under_another_hash_seed():
 
 
 @pytest.mark.slow
-def test_report_section():
+def test_report_section(tmp_path):
     from zener_sym.report import build as report
 
     names = [n for n, _ in report.SECTIONS]
     assert "derivation" in names
-    text = dict(report.SECTIONS)["derivation"]()
+    text = dict(report.SECTIONS)["derivation"](tmp_path)
     assert "every step passed" in text and "2.4424389" in text

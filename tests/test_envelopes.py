@@ -1,6 +1,8 @@
-"""envelopes.build measures what it claims: known perturbations come out as their size."""
+"""bench.envelopes.build measures what it claims: known perturbations come out as their size;
+scene.envelopes reads and compares the table."""
 import pytest
 
+from zener_sym.bench.envelopes import build
 from zener_sym.scene import envelopes
 from zener_sym.models import REGISTRY
 
@@ -13,7 +15,7 @@ SMALL = [(0.0, 0.5), (0.5, 1.0), (1.0, 2.5)]
 def built(monkeypatch):
     monkeypatch.setitem(REGISTRY, "slowfake", Perturbed("slowfake", 2e-4, lam_bound=2.0,
                                                         sleep=0.02))
-    return envelopes.build(models=["exact", "slowfake"], intervals=SMALL, points_per_interval=2,
+    return build(models=["exact", "slowfake"], intervals=SMALL, points_per_interval=2,
                            repeats=1, cost_lams=(0.1, 1.0))
 
 
@@ -49,4 +51,4 @@ def test_compare_detects_stale_tables(built, tmp_path):
 @pytest.mark.slow
 def test_committed_table_is_up_to_date():
     """The committed table matches a fresh measurement (regenerate: zener-sym envelopes)."""
-    assert envelopes.compare(envelopes.load(), envelopes.build()) == []
+    assert envelopes.compare(envelopes.load(), build()) == []

@@ -86,16 +86,31 @@ def test_against_second_order_integration(lam):
     assert s.e == pytest.approx(ref["e"], rel=1e-6)
 
 
-@pytest.mark.parametrize("lam", [0.05, 0.11, 1.01, 1.51, 1.99, 4.0, 10.0])
-def test_identities(lam):
-    s = zs.summary(lam, model="exact")
-    # energy balance: the kinetic energy lost, 1 − e², went into the plate, 2λ∫F̄² (Eq. 74-76);
-    # int_F2 is integrated as its own state, so this is a genuine check
-    assert s.xi == pytest.approx(2 * lam * s.int_F2, rel=1e-10)
+@pytest.mark.parametrize("lam", [1.01, 1.51, 1.99, 4.0, 10.0])
+def test_energy_balance_scipy(lam):
+    """xi = 1 - e^2 (Eqs. 69, 74-76) where the two sides are separate states: on the scipy path
+    xi is 2 lambda J, with J = int F^2 integrated as its own state, and, where xi >= 1/2, e is
+    -w(tau_d), the velocity state (below 1/2 the solver forms e as sqrt(1 - xi), and on the table
+    path xi and the impulse are formed from e: no check there; the mpmath test covers small
+    lambda)."""
+    s = zs.summary(lam, model="exact", backend="scipy")
+    assert s.xi >= 0.5
     assert s.xi == pytest.approx(1 - s.e**2, rel=1e-10)
-    assert s.impulse == pytest.approx(1 + s.e, rel=1e-12)
-    assert s.eta == pytest.approx(s.tau_dr / s.tau_dc, rel=1e-14)
-    assert s.tau_dr == pytest.approx(s.tau_d - s.tau_dc, rel=1e-14)
+
+
+@pytest.mark.parametrize("lam", [0.05, 0.11, 1.51, 10.0])
+def test_energy_and_momentum_balance_mpmath(lam):
+    """On the mpmath path e = -v(tau_d) (v = delta'), the impulse 1 - w(tau_d) and xi = 2 lambda J
+    are three separate states: the impulse is 1 + e (momentum, Eq. 47, since the force vanishes
+    at tau_d) and xi = 1 - e^2 (energy), to the working precision."""
+    from zener_sym.exact import mp as exact_mp
+
+    import mpmath
+
+    s = exact_mp.solve(lam, dps=30)
+    with mpmath.workdps(30):  # the arithmetic below at the solution's precision
+        assert abs(s.impulse - (1 + s.e)) < 1e-25
+        assert abs(s.xi - (1 - s.e**2)) < 1e-25
 
 
 def test_history_consistent_with_summary():

@@ -2,7 +2,7 @@
 
 References: the scipy integrator at rtol 1e-13 at lambda values that are NOT table nodes
 (random points, piece edges, midpoints between nodes), Hertz's closed forms at lambda = 0, and the
-exact identities I(tau_d) = 1 + e and xi = 1 - e^2 = 2 lambda int F^2 (energy balance).
+identity I(tau_d) = 1 + e between the history table (I) and the summary table (e).
 """
 import numpy as np
 import pytest
@@ -88,16 +88,17 @@ def test_history_within_documented_bound(lam):
 
 
 def test_history_identities():
+    """The history table's impulse at tau_d against the summary table's e: two tables built
+    separately, one identity (momentum: I(tau_d) = 1 + e)."""
     lam = np.array([[0.2], [1.3], [3.3], [4.9]])
     s = zs.summary(lam[:, 0], model="exact")
-    tau = np.stack([np.array([0.0, 0.5 * t, t, 2 * t]) for t in s.tau_d])
+    # just before tau_d (from tau_d on, the history's impulse IS 1 + e by construction), where
+    # I = 1 + e - O((1e-7 tau_d)^(5/2)) since F ~ (tau_d - tau)^(3/2)
+    tau = np.stack([np.array([0.0, 0.5 * t, t * (1 - 1e-7), 2 * t]) for t in s.tau_d])
     h = zs.history(lam, tau, model="exact")
-    np.testing.assert_allclose(h.impulse[:, 2], 1 + s.e, rtol=1e-12)  # I(tau_d) = 1 + e
+    np.testing.assert_allclose(h.impulse[:, 2], 1 + s.e, rtol=0, atol=1e-11)
     np.testing.assert_array_equal(h.delta[:, 3], 0.0)  # after the contact
-    np.testing.assert_allclose(h.impulse[:, 3], 1 + s.e, rtol=1e-15)
     np.testing.assert_array_equal(h.delta[:, 0], 0.0)
-    np.testing.assert_allclose(h.velocity, 1 - h.impulse, rtol=0, atol=0)
-    np.testing.assert_allclose(h.force, h.delta**1.5, rtol=1e-15)
 
 
 def test_vectorised_equals_elementwise():

@@ -10,7 +10,6 @@ import pytest
 import zener_sym as zs
 from zener_sym.derivation import lambda_series as ls
 from zener_sym.exact import force_end as fe
-from zener_sym.exact import mp as exact_mp
 from zener_sym.models import series as series_model
 
 DATA = json.loads((resources.files("zener_sym") / "data" / "lambda_series.json").read_text("utf-8"))

@@ -1,5 +1,7 @@
 """The chart style and the public plot functions."""
 import doctest
+import os
+import subprocess
 import sys
 
 import numpy as np
@@ -27,9 +29,15 @@ def test_every_model_has_its_own_fixed_style():
     assert not missing
     colours = [style.style_for(m)["color"] for m in zs.MODELS]
     assert len(set(colours)) == len(colours)
-    # fixed: the same answer every call, whatever else was styled before
-    assert style.style_for("ham1") == style.style_for("ham1")
-    assert style.style_for("something new") == style.style_for("something new")
+    # fixed: a model's style is its table entry, and an unknown name gets the same style in
+    # another process with another hash seed, after other names were styled there first
+    assert style.style_for("ham1")["color"] == style.MODEL_STYLES["ham1"][0]
+    code = ("from zener_sym.plot import style; [style.style_for(n) for n in ('a', 'b', 'c')]; "
+            "print(repr(style.style_for('something new')))")
+    env = {**os.environ, "PYTHONHASHSEED": "12345"}
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                         check=True).stdout
+    assert out.strip() == repr(style.style_for("something new"))
     assert style.style_for("exact, solve_ivp DOP853")["color"] == style.METHOD_STYLES["DOP853"][0]
 
 

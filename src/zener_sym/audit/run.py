@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import re
-import time
 
 from . import derived
 from .checks import CHECKS
@@ -90,10 +89,3 @@ def summary_line(results) -> str:
     body = ", ".join(f"{n} {v}" for v, n in counts.items() if n)
     return f"{len(results)} items audited: {body}."
 
-
-if __name__ == "__main__":  # pragma: no cover
-    t0 = time.perf_counter()
-    res = run_audit()
-    for r in res:
-        print(r.id, r.verdict, "|", r.evidence[:150], "|", r.note[:80])
-    print(summary_line(res), f"{time.perf_counter() - t0:.1f} s")

@@ -119,7 +119,7 @@ def chart(rows, curves, path, lam_curves=1.01) -> None:
     """Four panels in the package style: squared residual and tau_d error against order (both
     formulations, every lambda, optimal and paper c0), and the c0-curves of the squared
     residual and of tau_d."""
-    from ..plot.style import LAMBDA_COLORS, legend_outside, rc, save
+    from ..plot.style import LAMBDA_COLORS, legend_outside, rc
 
     dashes = {"paper": "--", "strained": "-"}
     with rc() as plt:
@@ -191,6 +191,16 @@ def write(root=None, with_chart=True) -> list:
         chart(rows, c0_curves(), fig / "ham_convergence.png")
         written.append(fig / "ham_convergence.png")
     return written
+
+
+def fresh_texts(root=None, rows=None) -> dict:
+    """``{path relative to root: fresh text}`` of the table's document and the CSV (the
+    artefact ``ham-convergence`` of ``zener-sym regen``)."""
+    root = _root(root)
+    rows = study() if rows is None else rows
+    md = (root / "docs" / "ham_convergence.md").read_text()
+    return {"docs/ham_convergence.md": _splice(md, render_table(rows)),
+            "docs/data/ham_convergence.csv": render_csv(rows)}
 
 
 def check(root=None, rows=None) -> list:

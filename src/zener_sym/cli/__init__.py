@@ -13,11 +13,11 @@ import re
 import sys
 
 from . import (audit, bench, compare, derive, envelopes, exact_table, figures, fit, generate,
-               ham1_table, ham_convergence, report, scene, table)
+               ham1_table, ham_convergence, regen, report, scene, table)
 
 #: The subcommand modules, in the order ``--help`` lists them.
-COMMANDS = (report, scene, compare, fit, figures, table, generate, derive, audit, bench, envelopes,
-            exact_table, ham1_table, ham_convergence)
+COMMANDS = (report, scene, compare, fit, figures, table, regen, generate, derive, audit, bench,
+            envelopes, exact_table, ham1_table, ham_convergence)
 
 #: A value that starts like a negative number ("-1mm", "-.5"), which argparse would take for an
 #: option; it is joined to its option so that the range checks see it and say what is allowed.

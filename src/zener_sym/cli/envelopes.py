@@ -1,8 +1,11 @@
 """``zener-sym envelopes [--check]``: measure every model's error envelope against exact and
-write the table that :func:`zener_sym.select_model` reads (:mod:`zener_sym.scene.envelopes`)."""
+write the table that :func:`zener_sym.select_model` reads (measured by
+:mod:`zener_sym.bench.envelopes`, read by :mod:`zener_sym.scene.envelopes`); the artefact
+``envelopes`` of ``zener-sym regen``."""
 from __future__ import annotations
 
-from ..scene.envelopes import build, compare, load, save
+from ..bench.envelopes import build
+from ..scene.envelopes import compare, load, save
 from ._checkout import check_result
 
 

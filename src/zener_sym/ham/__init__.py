@@ -13,6 +13,6 @@ Built on top of the generated kernels:
 - :mod:`.spectral`: per-lambda Chebyshev series of the first-order solution (ham1's fast path);
 - :mod:`.higher`: orders beyond the first, with Liao's c0: the paper's homotopy (orders 1-2) and a
   strained-time homotopy (orders 1-8) (the model ``ham``, docs/ham_convergence.md);
-- :mod:`.kernel_check`: the numpy kernels against the mpmath ones (``python -m
-  zener_sym.ham.kernel_check``).
+- :mod:`.kernel_check`: the numpy kernels against the mpmath ones (``zener-sym regen
+  kernel-check``).
 """

@@ -13,7 +13,7 @@ derived in ``zener_sym.derivation.ham_higher`` and ``zener_sym.derivation.ham_st
     pi/omega0, so R_m ~ (pi/omega0 - tau)^{3/2 - m} there (lambda > 0): integrable for m <= 2,
     not for m >= 3 (delta_3' is infinite at pi/omega0, delta_4 itself). This formulation stops at
     order 2 (:data:`PAPER_MAX_ORDER`); higher orders raise ValueError. Past pi/omega0, delta0 < 0
-    and the fractional terms are set to zero (the continuation of ``zener_sym.models.ham``'s
+    and the fractional terms are set to zero (the continuation of ``zener_sym.models.ham0_ham1``'s
     first order: zero force of the zeroth-order compression), which leaves a linear cascade of
     constant-coefficient ODEs, solved by a matrix exponential.
 

@@ -1,6 +1,6 @@
 """Measure the generated numpy kernels against the generated mpmath kernels on a grid.
 
-``python -m zener_sym.ham.kernel_check`` prints, per kernel, the largest relative error where
+``measure()`` gives, per kernel, the largest relative error where
 |mpmath value| >= 1e-3 and the largest absolute error where it is smaller (near zeros), over lambda in {0, 0.05, ..., 2.4, 2.4399} and tau at
 40 points of [0, pi/omega0] (1e-8 from both ends included) plus 5 points of the continuation, and
 the wall-time ratio mpmath / numpy for the whole grid measured in the same run.
@@ -57,14 +57,3 @@ def measure(dps=30):
         out[f"{order}.{name}"] = (worst_rel, worst_abs)
     return out, t_mp / t_np, sum(len(t) for _, t in pts)
 
-
-def main():  # pragma: no cover
-    res, ratio, n = measure()
-    for k, (r, a) in res.items():
-        print(f"{k:16s} max relative error {r:.1e} (|value| >= 1e-3), max absolute error {a:.1e} "
-              "(|value| < 1e-3)")
-    print(f"{n} (tau, lambda) points per kernel; mpmath / numpy wall time = {ratio:.0f}")
-
-
-if __name__ == "__main__":  # pragma: no cover
-    main()

@@ -2,8 +2,8 @@
 from .base import (HISTORY_FIELDS, REGISTRY, SUMMARY_FIELDS, FieldUnavailableError, Model,
     get_model, register)
 from . import exact  # noqa: F401  (registers "exact")
-from . import ham  # noqa: F401  (registers "ham0", "ham1")
-from . import ham_series  # noqa: F401  (registers "ham": any order, Liao's c0)
+from . import ham0_ham1  # noqa: F401  (registers "ham0", "ham1")
+from . import ham_any_order  # noqa: F401  (registers "ham": any order, Liao's c0)
 from . import pulses  # noqa: F401  (registers "hertz", "hunter", "reed", "oneway")
 from . import linear  # noqa: F401  (registers "linear", "raman")
 from . import fits  # noqa: F401  (registers "fits")

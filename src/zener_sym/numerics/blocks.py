@@ -3,7 +3,7 @@
 On the machine these were measured on a fresh page costs about 1.5 us, and a whole-grid float64
 temporary of a 200 x 500 history is 200 of them, so a history's time depended more on fresh
 memory than on its arithmetic (docs/benchmarks.md). The exact tables (``exact.table``) and the
-models (``models.ham``) evaluate their points in blocks and put their fields in one allocation.
+models (``models.ham0_ham1``) evaluate their points in blocks and put their fields in one allocation.
 Imports nothing of the package.
 """
 from __future__ import annotations

@@ -9,7 +9,7 @@ import numpy as np
 from .format import PAPER_LAMBDAS, fmt, markdown_table, seconds
 
 
-def exact_section() -> str:
+def exact_section(out_dir: Path) -> str:
     from ..api import summary
     from ..models import SUMMARY_FIELDS
 
@@ -25,7 +25,7 @@ def exact_section() -> str:
     )
 
 
-def scene_section() -> str:
+def scene_section(out_dir: Path) -> str:
     import warnings
 
     from ..scene.scene import Scene
@@ -43,17 +43,18 @@ def scene_section() -> str:
     )
 
 
-def _exact_fast_section() -> str:
+def _exact_fast_section(out_dir: Path) -> str:
     from .exact_fast import section
 
     return section()
 
 
-def bench_section() -> str:
-    """Work-precision charts and the stability map (``zener-sym bench --quick``) into OUT_DIR."""
+def bench_section(out_dir: Path) -> str:
+    """Work-precision charts and the stability map (``zener-sym bench --quick``) into
+    ``out_dir/bench``."""
     from ..bench import suite as cmd
 
-    folder = OUT_DIR / "bench"
+    folder = Path(out_dir) / "bench"
     text = cmd.run(folder, quick=True, log=lambda *a: None)
     keep = text.split("## Best accuracy")[0].split("## Work-precision charts")[0]
     tail = text.split("## Speed targets")[1] if "## Speed targets" in text else ""
@@ -62,7 +63,7 @@ def bench_section() -> str:
             "work_precision_*.png, stability.png).\n\n### Speed targets" + tail)
 
 
-def model_comparison_section() -> str:
+def model_comparison_section(out_dir: Path) -> str:
     """Every model against exact at the paper's lambdas, then the HAM error envelopes."""
     from .ham_envelopes import comparison_markdown, envelope_markdown
 
@@ -74,7 +75,7 @@ def model_comparison_section() -> str:
             f"max |F - F_exact| over the contact / exact F_m); {seconds(dt)}.\n\n" + env)
 
 
-def derivation_section() -> str:
+def derivation_section(out_dir: Path) -> str:
     """Pass/fail summary of the derivation with timing."""
     # imported when the section runs: the derivation is offline code, not on the runtime path
     from ..derivation import registry
@@ -95,7 +96,7 @@ def derivation_section() -> str:
     )
 
 
-def _audit_section() -> str:
+def _audit_section(out_dir: Path) -> str:
     """The audit's summary line."""
     from ..audit.markdown import cached_results
     from ..audit.run import summary_line
@@ -104,10 +105,11 @@ def _audit_section() -> str:
             "audit` (AUDIT.md).")
 
 
-#: Where report sections write files (charts); set by ``run``.
-OUT_DIR = Path("zener-sym-report")
+#: Where report sections write files (charts) unless ``run`` is told otherwise.
+DEFAULT_OUT_DIR = Path("zener-sym-report")
 
-#: (title, callable returning markdown). Later parts of the project append their section here.
+#: (title, callable(out_dir) returning markdown; ``out_dir`` is the folder for its files).
+#: Later parts of the project append their section here.
 SECTIONS = [
     ("exact", exact_section),
     ("derivation", derivation_section),
@@ -120,10 +122,9 @@ SECTIONS = [
 
 
 def run(out=print, out_dir=None, skip=()) -> int:
-    """Print every section; files (charts) go to ``out_dir``. ``skip``: section names to leave out."""
-    global OUT_DIR
-    if out_dir is not None:
-        OUT_DIR = Path(out_dir)
+    """Print every section; files (charts) go to ``out_dir`` (default :data:`DEFAULT_OUT_DIR`).
+    ``skip``: section names to leave out."""
+    out_dir = DEFAULT_OUT_DIR if out_dir is None else Path(out_dir)
     import datetime
     import platform
 
@@ -136,7 +137,7 @@ def run(out=print, out_dir=None, skip=()) -> int:
         if name in skip:
             continue
         try:
-            out(section())
+            out(section(out_dir))
         except Exception as exc:  # a failing section must not hide the others
             status = 1
             out(f"## {name}: FAILED\n\n{type(exc).__name__}: {exc}")

@@ -19,7 +19,3 @@ def seconds(dt: float) -> str:
     """A duration for people: two significant digits, and "< 0.01 s" instead of "0.0 s"."""
     return "< 0.01 s" if dt < 0.01 else f"{dt:.2g} s" if dt < 10 else f"{dt:.0f} s"
 
-
-def yes_no(flag) -> str:
-    """``yes`` or ``no`` for a table cell (not Python's True/False)."""
-    return "yes" if flag else "no"

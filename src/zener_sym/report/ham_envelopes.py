@@ -3,7 +3,8 @@
 ``envelopes()`` measures, over a lambda grid, the largest relative error of ham0 and ham1 against
 the exact model for F_m, tau_d, e, impulse and delta_m, and the largest error of the force
 history over the contact (max |F_model - F_exact| over a tau grid covering both contacts, relative
-to the exact F_m). ``python -m zener_sym.report.ham_envelopes`` prints the table (markdown).
+to the exact F_m). The table in docs/ham.md (between :data:`BEGIN` and :data:`END`) is the
+artefact ``ham-envelopes`` of ``zener-sym regen``.
 """
 from __future__ import annotations
 
@@ -13,7 +14,8 @@ import numpy as np
 
 from .format import seconds
 
-__all__ = ["envelopes", "envelope_markdown", "comparison_markdown", "FIELDS", "LAMBDAS"]
+__all__ = ["envelopes", "envelope_markdown", "comparison_markdown", "update_doc", "FIELDS",
+           "LAMBDAS"]
 
 FIELDS = ("F_m", "tau_d", "e", "impulse", "delta_m")
 #: lambda grid of the envelopes: [0, 2.4] in steps of 0.1
@@ -111,11 +113,14 @@ def comparison_markdown(lams=(0.0, 0.11, 1.01, 1.51, 1.99)) -> str:
             + head + exrow + "\n" + body)
 
 
-def _main():  # pragma: no cover - command-line helper
-    t0 = time.perf_counter()
-    print(envelope_markdown())
-    print(f"\n({seconds(time.perf_counter() - t0)})")
+BEGIN = "<!-- ham-envelopes:begin (zener-sym regen ham-envelopes) -->"
+END = "<!-- ham-envelopes:end -->"
 
 
-if __name__ == "__main__":  # pragma: no cover
-    _main()
+def update_doc(text: str, table: str) -> str:
+    """``text`` (docs/ham.md) with the block between :data:`BEGIN` and :data:`END` replaced by
+    ``table``; ValueError when the markers are missing."""
+    if BEGIN not in text or END not in text:
+        raise ValueError(f"the document lacks the marker lines {BEGIN!r} / {END!r}")
+    i, j = text.index(BEGIN) + len(BEGIN), text.index(END)
+    return text[:i] + "\n" + table + "\n" + text[j:]

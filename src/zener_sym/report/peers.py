@@ -8,14 +8,13 @@ C1 x = c1 lambda with this package's c1 = (4/5)(5/4)^{8/5} B(8/5, 1/2) = 1.5 x 1
 
 Each peer is measured by the relative error of e on lambda = 0.02, 0.04, ..., 5 (the grid of the
 toolbox run) and, for the formulas, also on 40 geometric points from 1e-4 to 0.02; "holds to tol
-up to lambda*" means every grid point with lambda <= lambda* is within tol. Regenerate the table in docs/viscoelastic.md with
-``python -m zener_sym.report.peers --write docs/viscoelastic.md``.
+up to lambda*" means every grid point with lambda <= lambda* is within tol. The table in
+docs/viscoelastic.md is the artefact ``peers`` of ``zener-sym regen``.
 """
 from __future__ import annotations
 
 import csv
 import io
-import sys
 from dataclasses import dataclass
 from importlib import resources
 
@@ -157,7 +156,7 @@ def markdown(rows=None) -> str:
     return "\n".join(out) + "\n"
 
 
-_BEGIN, _END = "<!-- peers:begin (python -m zener_sym.report.peers --write docs/viscoelastic.md) -->", "<!-- peers:end -->"
+_BEGIN, _END = "<!-- peers:begin (zener-sym regen peers) -->", "<!-- peers:end -->"
 
 
 def update_doc(text: str, table: str) -> str:
@@ -165,14 +164,3 @@ def update_doc(text: str, table: str) -> str:
     i, j = text.index(_BEGIN) + len(_BEGIN), text.index(_END)
     return text[:i] + "\n" + table + text[j:]
 
-
-if __name__ == "__main__":  # pragma: no cover
-    if sys.argv[1:2] == ["--write"]:
-        path = sys.argv[2]
-        with open(path, encoding="utf-8") as fh:
-            text = fh.read()
-        with open(path, "w", encoding="utf-8") as fh:
-            fh.write(update_doc(text, markdown()))
-        print(f"updated {path}")
-    else:
-        print(markdown())

@@ -1,0 +1,354 @@
+"""Every committed artefact the package rebuilds, in one list: ``zener-sym regen``.
+
+An artefact is a set of committed files (kernels, tables, data, tables inside docs) that a
+builder of some layer computes. Each entry of :data:`ARTEFACTS` says which files it rebuilds, how
+to compute their fresh text (``fresh``), how to tell a committed file from a fresh one (``same``:
+a text diff, or a numeric comparison for tables computed by floating-point solvers), and whether
+it needs a source checkout. ``zener-sym regen --check`` compares them all; ``zener-sym regen
+NAME`` rewrites one. The older commands (``generate``, ``exact-table``, ...) stay as aliases.
+
+To add an artefact: write a ``fresh(root) -> {path: text}`` function (and a ``same`` when a text
+diff is too strict), and add one :class:`Artefact` to :data:`ARTEFACTS`.
+
+This module names builders of several layers (codegen, numerics, scene, bench, report, audit,
+figures), so it sits in the report/bench/audit layer, below the command line that calls it.
+"""
+from __future__ import annotations
+
+import difflib
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+__all__ = ["Artefact", "ARTEFACTS", "names", "get", "locate", "check", "build",
+           "text_diff"]
+
+#: A path of a committed file relative to the checkout's root.
+_PACKAGE = "src/zener_sym/"
+
+
+def locate(root: Path | None, rel: str) -> Path:
+    """The file ``rel`` (relative to the checkout root) in ``root``; without a checkout, package
+    data (``src/zener_sym/...``) is found in the installed package."""
+    if root is not None:
+        return Path(root) / rel
+    if rel.startswith(_PACKAGE):
+        return Path(__file__).resolve().parent / rel[len(_PACKAGE):]
+    raise ValueError(f"{rel} lives in the source checkout, and there is none")
+
+
+def text_diff(rel: str, old: str, new: str) -> list[str]:
+    """Unified diff lines committed -> fresh (empty when the texts are equal)."""
+    if old == new:
+        return []
+    return list(difflib.unified_diff(old.splitlines(), new.splitlines(), f"{rel} (committed)",
+                                     f"{rel} (fresh)", lineterm=""))
+
+
+@dataclass(frozen=True)
+class Artefact:
+    """One rebuildable artefact.
+
+    Attributes
+    ----------
+    name : str
+        Its name on the command line (``zener-sym regen NAME``).
+    about : str
+        What it is, one line.
+    paths : tuple of str
+        The committed files it rebuilds, relative to the checkout root (a pattern with ``*`` for
+        a family of files).
+    fresh : callable(root) -> dict
+        ``{path relative to root: fresh text}`` of every file it checks; the expensive part.
+    same : callable(rel, committed, fresh) -> list of str
+        The differences that make a committed file stale (empty when fresh); default a text diff.
+    write : callable(root, texts) -> list of Path, optional
+        Writes the artefact from the fresh texts; default writes each text (unchanged files are
+        left alone). An artefact that writes more than it checks (charts) gives its own.
+    needs_checkout : bool
+        Its files live in the repository (docs/, generated/, the root), not in the installed
+        package.
+    alias : str
+        The older command that does the same.
+    """
+
+    name: str
+    about: str
+    paths: tuple
+    fresh: Callable
+    same: Callable = text_diff
+    write: Callable | None = None
+    needs_checkout: bool = True
+    alias: str = ""
+
+
+def _write_texts(root: Path | None, texts: dict) -> list[Path]:
+    written = []
+    for rel, text in texts.items():
+        p = locate(root, rel)
+        if p.exists() and p.read_text(encoding="utf-8") == text:
+            continue
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(text, encoding="utf-8")
+        written.append(p)
+    return written
+
+
+def check(art: Artefact, root: Path | None, texts: dict | None = None) -> list[str]:
+    """Why the committed files of ``art`` are stale (empty list: fresh). ``texts``: its fresh
+    texts if already computed."""
+    texts = art.fresh(root) if texts is None else texts
+    problems = []
+    for rel, new in texts.items():
+        p = locate(root, rel)
+        if not p.exists():
+            problems.append(f"{rel} is missing")
+            continue
+        problems += art.same(rel, p.read_text(encoding="utf-8"), new)
+    return problems
+
+
+def build(art: Artefact, root: Path | None) -> list[Path]:
+    """Rebuild ``art``; the files written."""
+    texts = art.fresh(root)
+    return (art.write or _write_texts)(root, texts)
+
+
+# --- the artefacts' fresh texts and comparisons -----------------------------------------------
+
+def _kernels(root):
+    from . import codegen
+
+    return {f"generated/{name}": text for name, text in codegen.render_all().items()}
+
+
+def _formulas(root):
+    from .derivation import formulas, registry
+
+    return {formulas.FILENAME: formulas.render(registry.derive(checks=False))}
+
+
+def _table_module(text: str) -> dict:
+    """The names a generated table file defines (it holds data only: literals)."""
+    ns: dict = {}
+    exec(compile(text, "<generated table>", "exec"), ns)  # noqa: S102 - our own generated data
+    return ns
+
+
+def _table(builder_name: str, fields: tuple, what: str):
+    """fresh/same of a Chebyshev table in generated/ (compared numerically within the builder's
+    ``CHECK_RTOL``, plus its inputs hash: the node values come from floating-point solvers)."""
+    built: dict = {}  # fresh text -> the tables it was rendered from (what builder.compare reads)
+
+    def builder():
+        import importlib
+
+        return importlib.import_module(builder_name)
+
+    def fresh(root):
+        b = builder()
+        tables = b.build_tables()
+        text = b.render(tables)
+        built.clear()
+        built[text] = tables
+        return {f"generated/{b.table_path().name}": text}
+
+    def same(rel, old, new):
+        b = builder()
+        try:
+            o = _table_module(old)
+            stored = {k: o[a] for k, a in fields}
+        except Exception as exc:  # a broken committed file is stale, not a crash
+            return [f"{rel} does not load: {type(exc).__name__}: {exc}"]
+        tables = built[new] if new in built else b.build_tables()
+        problems = b.compare(stored, tables)
+        current = _table_module(new)["INPUTS_HASH"]
+        if o.get("INPUTS_HASH") != current:
+            problems.append(f"inputs hash {o.get('INPUTS_HASH')} != current {current} "
+                            f"({what} changed)")
+        return problems
+
+    return fresh, same
+
+
+def _envelopes_fresh(root):
+    from .bench.envelopes import build
+
+    return {"src/zener_sym/data/envelopes.json": json.dumps(build(), indent=1, sort_keys=True)
+            + "\n"}
+
+
+def _envelopes_same(rel, old, new):
+    from .scene.envelopes import compare
+
+    return compare(json.loads(old), json.loads(new))
+
+
+def _ham_convergence_fresh(root):
+    from .bench import ham_convergence
+
+    return ham_convergence.fresh_texts(root)
+
+
+def _ham_convergence_write(root, texts):
+    from .bench import ham_convergence
+
+    return ham_convergence.write(root=root, with_chart=True)
+
+
+def _audit_fresh(root):
+    from .audit.markdown import cached_results, markdown
+
+    return {"AUDIT.md": markdown(cached_results())}
+
+
+def _figures_fresh(root):
+    from .figures import data as D
+
+    return {f"docs/figures/{D.FIGURES[n].name}.csv": D.to_csv(D.FIGURES[n].compute(False))
+            for n in D.NUMBERS}
+
+
+def _figures_same(rel, old, new):
+    from .figures.make import compare_csv
+
+    return [f"{rel}: {d}" for d in compare_csv(old, new)]
+
+
+def _figures_write(root, texts):
+    from .figures import make
+
+    make.build(locate(root, "docs/figures"), None, ("png",))
+    return [locate(root, rel) for rel in texts]
+
+
+def _peers_fresh(root):
+    from .report import peers
+
+    rel = "docs/viscoelastic.md"
+    return {rel: peers.update_doc(locate(root, rel).read_text("utf-8"), peers.markdown())}
+
+
+def _ham_envelopes_fresh(root):
+    from .report import ham_envelopes
+
+    rel = "docs/ham.md"
+    return {rel: ham_envelopes.update_doc(locate(root, rel).read_text("utf-8"),
+                                          ham_envelopes.envelope_markdown())}
+
+
+def _kernel_check_fresh(root):
+    from .ham import kernel_check
+
+    worst = kernel_check.measure()[0]  # the wall-time ratio it also gives is no artefact
+    lines = ["kernel,max_rel_error,max_abs_error"]
+    lines += [f"{k},{r:.2g},{a:.2g}" for k, (r, a) in worst.items()]
+    return {"docs/data/kernel_check.csv": "\n".join(lines) + "\n"}
+
+
+def _kernel_check_same(rel, old, new):
+    """Worst errors near rounding differ between machines (libm, SIMD): stale only when one
+    moves by more than a factor 4, or the kernels listed differ."""
+    def rows(text):
+        out = {}
+        for line in text.splitlines()[1:]:
+            k, rel_err, abs_err = line.split(",")
+            out[k] = (float(rel_err), float(abs_err))
+        return out
+
+    try:
+        o, n = rows(old), rows(new)
+    except ValueError as exc:
+        return [f"{rel} does not parse: {exc}"]
+    if set(o) != set(n):
+        return [f"{rel}: kernels {sorted(o)} != {sorted(n)}"]
+    bad = []
+    for k in sorted(o):
+        for what, a, b in zip(("relative", "absolute"), o[k], n[k]):
+            if abs(math.log10(max(a, 1e-18)) - math.log10(max(b, 1e-18))) > math.log10(4):
+                bad.append(f"{rel}: {k} max {what} error {a:.2g} -> {b:.2g}")
+    return bad
+
+
+def _bench_reference_fresh(root):
+    from .bench import reference
+
+    return {"src/zener_sym/data/bench_reference.json": reference.dumps(reference.compute())}
+
+
+def _bench_reference_same(rel, old, new):
+    from .bench import reference
+
+    return reference.compare(json.loads(old), json.loads(new))
+
+
+def _lambda_series_fresh(root):
+    from .derivation import lambda_series as ls
+
+    ctx = ls.derive()
+    if not ctx.log.ok:
+        raise RuntimeError("derivation.lambda_series has failed steps: "
+                           + "; ".join(str(s) for s in ctx.log.steps if not s.passed))
+    return {"src/zener_sym/data/lambda_series.json": ls.coefficients_json(ctx)}
+
+
+_EXACT_FRESH, _EXACT_SAME = _table(
+    "zener_sym.exact.table_build", (("summary", "SUMMARY"), ("history", "HISTORY")),
+    "the builder or the solver")
+_HAM1_FRESH, _HAM1_SAME = _table(
+    "zener_sym.ham.table_build", (("LAM_CONT", "LAM_CONT"), ("PIECES", "PIECES"),
+                                  ("COEF", "COEF")),
+    "the builder, the ham1 series or the generated ham1 kernels")
+
+#: Every artefact, in the order ``regen`` builds them (an artefact after those it reads: the
+#: ham1 table hashes the generated kernels, the envelopes use the tables).
+ARTEFACTS: tuple = (
+    Artefact("kernels", "the HAM kernels emitted from the derivation",
+             tuple(f"generated/ham{k}_{b}.py" for k in "01" for b in ("numpy", "mpmath")),
+             _kernels, alias="generate"),
+    Artefact("formulas", "the derived equations in the paper's notation", ("FORMULAS.md",),
+             _formulas, alias="generate, derive --markdown"),
+    Artefact("exact-table", "Chebyshev tables of the fast exact model",
+             ("generated/exact_table.py",), _EXACT_FRESH, _EXACT_SAME, alias="exact-table"),
+    Artefact("ham1-table", "Chebyshev tables of the ham1 summary", ("generated/ham1_table.py",),
+             _HAM1_FRESH, _HAM1_SAME, alias="ham1-table"),
+    Artefact("lambda-series", "coefficients of the small- and large-lambda series",
+             ("src/zener_sym/data/lambda_series.json",), _lambda_series_fresh,
+             needs_checkout=False),
+    Artefact("envelopes", "measured error envelopes that select_model reads",
+             ("src/zener_sym/data/envelopes.json",), _envelopes_fresh, _envelopes_same,
+             needs_checkout=False, alias="envelopes"),
+    Artefact("bench-reference", "the benchmark's mpmath reference",
+             ("src/zener_sym/data/bench_reference.json",), _bench_reference_fresh,
+             _bench_reference_same, needs_checkout=False, alias="bench --build-reference"),
+    Artefact("kernel-check", "numpy kernels against the mpmath kernels (docs/ham.md)",
+             ("docs/data/kernel_check.csv",), _kernel_check_fresh, _kernel_check_same),
+    Artefact("ham-envelopes", "error envelopes of ham0 and ham1 (table in docs/ham.md)",
+             ("docs/ham.md",), _ham_envelopes_fresh),
+    Artefact("ham-convergence", "convergence study of the HAM series",
+             ("docs/ham_convergence.md", "docs/data/ham_convergence.csv",
+              "docs/figures/ham_convergence.png"), _ham_convergence_fresh,
+             write=_ham_convergence_write, alias="ham-convergence"),
+    Artefact("peers", "peers' e(v) against exact (table in docs/viscoelastic.md)",
+             ("docs/viscoelastic.md",), _peers_fresh),
+    Artefact("figures", "the paper's Figs. 3-15 against exact (data and charts)",
+             ("docs/figures/fig*.csv", "docs/figures/fig*.png"), _figures_fresh, _figures_same,
+             write=_figures_write, alias="figures --out docs/figures"),
+    Artefact("audit", "the paper audit", ("AUDIT.md",), _audit_fresh,
+             alias="audit --write"),
+)
+
+
+def names() -> list[str]:
+    """The artefacts' names, in build order."""
+    return [a.name for a in ARTEFACTS]
+
+
+def get(name: str) -> Artefact:
+    """The artefact called ``name``; ValueError listing the names otherwise."""
+    for a in ARTEFACTS:
+        if a.name == name:
+            return a
+    raise ValueError(f"unknown artefact {name!r}; allowed: {', '.join(names())}")

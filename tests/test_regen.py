@@ -1,0 +1,187 @@
+"""``zener-sym regen``: the registry of artefacts lists, checks and rebuilds every committed
+artefact, and its check fails when any one of them is stale.
+
+The staleness tests work on a temporary copy of an artefact's committed files: the artefact's
+fresh texts are taken to be the committed ones (its builder is monkeypatched: no rebuild), the
+check passes, then one number in the copy is changed and the same check must fail. The two
+tables are checked against their real builders (the ham1 table builds in a second; the exact
+table in a minute, marked slow).
+"""
+from __future__ import annotations
+
+import re
+import shutil
+
+import pytest
+
+from zener_sym import artefacts, cli
+from zener_sym.cli import regen
+
+from conftest import ROOT
+
+TABLES = ("exact-table", "ham1-table")
+#: A number as the artefacts print them (decimal point or exponent).
+_NUMBER = re.compile(r"(?<![\w.])\d+\.\d+(?:e[-+]?\d+)?|(?<![\w.])\d+e[-+]?\d+")
+
+
+def _committed(art, root) -> dict:
+    """The committed texts of the files ``art`` checks (its fresh texts' paths)."""
+    out = {}
+    for pattern in art.paths:
+        if pattern.endswith(".png"):
+            continue  # charts are written, not checked
+        for p in sorted(root.glob(pattern)):
+            out[str(p.relative_to(root))] = p.read_text(encoding="utf-8")
+    return out
+
+
+def _copy(art, tmp_path) -> dict:
+    texts = _committed(art, ROOT)
+    assert texts, f"{art.name}: no committed file matches {art.paths}"
+    for rel, text in texts.items():
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text(text, encoding="utf-8")
+    return texts
+
+
+def _perturb(text: str) -> str:
+    """``text`` with its middle number x replaced by 10 x + 1 (beyond every tolerance of a
+    check, also for values below a check's noise floor)."""
+    found = list(_NUMBER.finditer(text))
+    m = found[len(found) // 2]
+    return text[:m.start()] + repr(float(m.group()) * 10 + 1) + text[m.end():]
+
+
+def test_list_names_every_artefact(capsys):
+    assert cli.main(["regen", "--list"]) == 0
+    out = capsys.readouterr().out
+    for a in artefacts.ARTEFACTS:
+        assert a.name in out and a.paths[0] in out
+    assert len(set(artefacts.names())) == len(artefacts.ARTEFACTS)
+
+
+def test_unknown_name_is_a_usage_error(capsys):
+    assert cli.main(["regen", "--check", "kernel"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "unknown artefact 'kernel'" in err and "kernels" in err
+
+
+@pytest.mark.parametrize("name", [n for n in artefacts.names() if n not in TABLES])
+def test_check_fails_when_the_artefact_is_stale(name, tmp_path, monkeypatch):
+    art = artefacts.get(name)
+    texts = _copy(art, tmp_path)
+    fake = artefacts.Artefact(art.name, art.about, art.paths, lambda root: dict(texts), art.same,
+                              art.write, art.needs_checkout, art.alias)
+    assert artefacts.check(fake, tmp_path) == []
+    rel = sorted(texts)[-1]
+    (tmp_path / rel).write_text(_perturb(texts[rel]), encoding="utf-8")
+    problems = artefacts.check(fake, tmp_path)
+    assert problems, f"{name}: a changed number in {rel} went unnoticed"
+    (tmp_path / rel).unlink()
+    assert artefacts.check(fake, tmp_path) == [f"{rel} is missing"]
+
+
+def _table_stale(name, tmp_path, capsys):
+    art = artefacts.get(name)
+    texts = _copy(art, tmp_path)
+    assert artefacts.check(art, tmp_path) == []
+    (rel, text), = texts.items()
+    # a coefficient deep inside the table: the numeric comparison must see it
+    (tmp_path / rel).write_text(_perturb(text), encoding="utf-8")
+    assert artefacts.check(art, tmp_path)
+    # the inputs hash alone (the builder's sources changed, the numbers did not)
+    (tmp_path / rel).write_text(re.sub(r"INPUTS_HASH = '(\w+)'", "INPUTS_HASH = 'x'", text))
+    assert any("inputs hash x" in p for p in artefacts.check(art, tmp_path))
+
+
+def test_ham1_table_check_fails_when_stale(tmp_path, capsys):
+    _table_stale("ham1-table", tmp_path, capsys)
+
+
+@pytest.mark.slow
+def test_exact_table_check_fails_when_stale(tmp_path, capsys):
+    _table_stale("exact-table", tmp_path, capsys)
+
+
+def test_regen_command_reports_a_stale_artefact(tmp_path, monkeypatch, capsys):
+    """The command's exit code and message for a stale artefact (the peers table, its builder
+    monkeypatched to give the committed text with one number changed)."""
+    art = artefacts.get("peers")
+    doc = (ROOT / "docs" / "viscoelastic.md").read_text("utf-8")
+    fake = artefacts.Artefact(art.name, art.about, art.paths,
+                              lambda root: {"docs/viscoelastic.md": _perturb(doc)})
+    monkeypatch.setattr(artefacts, "ARTEFACTS", (fake,))
+    assert cli.main(["regen", "--check", "peers"]) == 1
+    out = capsys.readouterr().out
+    assert "peers: STALE" in out and "zener-sym regen peers" in out
+    fake = artefacts.Artefact(art.name, art.about, art.paths,
+                              lambda root: {"docs/viscoelastic.md": doc})
+    monkeypatch.setattr(artefacts, "ARTEFACTS", (fake,))
+    assert cli.main(["regen", "--check"]) == 0
+    assert "peers: up to date" in capsys.readouterr().out
+
+
+def test_regen_writes_what_the_builder_gives(tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("ZENER_SYM_SOURCE", str(tmp_path))
+    for d in ("derivation", "generated", "src/zener_sym"):
+        (tmp_path / d).mkdir(parents=True)
+    shutil.copy(ROOT / "pyproject.toml", tmp_path / "pyproject.toml")
+    fake = artefacts.Artefact("demo", "a demo", ("docs/demo.txt",),
+                              lambda root: {"docs/demo.txt": "x = 1\n"})
+    monkeypatch.setattr(artefacts, "ARTEFACTS", (fake,))
+    assert cli.main(["regen", "demo"]) == 0
+    assert (tmp_path / "docs" / "demo.txt").read_text() == "x = 1\n"
+    assert cli.main(["regen", "demo"]) == 0
+    assert "all unchanged" in capsys.readouterr().out
+    assert cli.main(["regen", "--check"]) == 0
+
+
+#: Where the suite already checks an artefact's freshness (through the older commands or the
+#: builders' own comparisons); those are not rebuilt a second time here.
+FRESH_ELSEWHERE = {
+    "kernels": "test_generate.py", "formulas": "test_generate.py",
+    "exact-table": "test_exact_fast.py::test_table_rebuild_agrees_numerically",
+    "ham1-table": "test_ham_table.py", "lambda-series": "test_lambda_series.py",
+    "envelopes": "test_envelopes.py::test_committed_table_is_up_to_date",
+    "ham-convergence": "test_ham_higher.py", "peers": "test_viscoelastic.py",
+    "figures": "test_figures.py", "audit": "test_audit.py",
+}
+
+
+def test_every_artefact_has_a_freshness_test():
+    assert set(FRESH_ELSEWHERE) | set(ONLY_HERE) == set(artefacts.names())
+
+
+ONLY_HERE = [n for n in artefacts.names() if n not in FRESH_ELSEWHERE]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ONLY_HERE)
+def test_committed_artefact_is_fresh(name):
+    """``zener-sym regen --check NAME`` on the tree, for the artefacts no other test checks."""
+    problems = artefacts.check(artefacts.get(name), ROOT)
+    assert not problems, "\n".join(problems[:40])
+
+
+def test_every_artefact_is_listed_once_and_can_be_found():
+    for a in artefacts.ARTEFACTS:
+        assert artefacts.get(a.name) is a
+        assert a.paths and all(not p.startswith("/") for p in a.paths)
+    with pytest.raises(ValueError, match="allowed: kernels, formulas"):
+        artefacts.get("nope")
+    assert regen.run(list_only=True, out=lambda *a: None) == 0
+
+
+def test_artefacts_in_the_repository_need_a_checkout(monkeypatch, tmp_path, capsys):
+    """From an installed copy (no checkout), naming an artefact that lives in the repository is a
+    usage error said up front, before any work."""
+    from zener_sym.cli import _checkout
+
+    monkeypatch.delenv(_checkout.ENV)
+    fake = tmp_path / "site-packages" / "zener_sym" / "cli" / "_checkout.py"
+    fake.parent.mkdir(parents=True)
+    monkeypatch.setattr(_checkout, "__file__", str(fake))
+    for argv in (["regen", "--check", "kernels"], ["regen", "audit"], ["regen"]):
+        assert cli.main(argv) == 2, argv
+        err = capsys.readouterr().err
+        assert "needs a source checkout" in err and err.count("\n") == 1, err

@@ -19,7 +19,7 @@ from zener_sym.cli import regen
 
 from conftest import ROOT
 
-TABLES = ("exact-table", "ham1-table")
+TABLES = ("exact-table", "exact-force-table", "ham1-table")
 #: A number as the artefacts print them (decimal point or exponent).
 _NUMBER = re.compile(r"(?<![\w.])\d+\.\d+(?:e[-+]?\d+)?|(?<![\w.])\d+e[-+]?\d+")
 
@@ -141,6 +141,7 @@ def test_regen_writes_what_the_builder_gives(tmp_path, monkeypatch, capsys):
 FRESH_ELSEWHERE = {
     "kernels": "test_generate.py", "formulas": "test_generate.py",
     "exact-table": "test_exact_fast.py::test_table_rebuild_agrees_numerically",
+    "exact-force-table": "test_exact_force_table.py::test_table_rebuild_agrees_numerically",
     "ham1-table": "test_ham_table.py", "lambda-series": "test_lambda_series.py",
     "envelopes": "test_envelopes.py::test_committed_table_is_up_to_date",
     "ham-convergence": "test_ham_higher.py", "peers": "test_viscoelastic.py",

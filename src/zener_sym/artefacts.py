@@ -297,6 +297,9 @@ def _lambda_series_fresh(root):
 _EXACT_FRESH, _EXACT_SAME = _table(
     "zener_sym.exact.table_build", (("summary", "SUMMARY"), ("history", "HISTORY")),
     "the builder or the solver")
+_FORCE_FRESH, _FORCE_SAME = _table(
+    "zener_sym.exact.force_table_build", (("summary", "SUMMARY"), ("history", "HISTORY")),
+    "the builder, the solvers or the plate table")
 _HAM1_FRESH, _HAM1_SAME = _table(
     "zener_sym.ham.table_build", (("LAM_CONT", "LAM_CONT"), ("PIECES", "PIECES"),
                                   ("COEF", "COEF")),
@@ -312,6 +315,9 @@ ARTEFACTS: tuple = (
              _formulas, alias="generate, derive --markdown"),
     Artefact("exact-table", "Chebyshev tables of the fast exact model",
              ("generated/exact_table.py",), _EXACT_FRESH, _EXACT_SAME, alias="exact-table"),
+    Artefact("exact-force-table", "Chebyshev tables of the exact model's force-free end (grains)",
+             ("generated/exact_force_table.py",), _FORCE_FRESH, _FORCE_SAME,
+             alias="exact-table --contact-end force"),
     Artefact("ham1-table", "Chebyshev tables of the ham1 summary", ("generated/ham1_table.py",),
              _HAM1_FRESH, _HAM1_SAME, alias="ham1-table"),
     Artefact("lambda-series", "coefficients of the small- and large-lambda series",

@@ -32,7 +32,8 @@ def _gen(name):
     import importlib
 
     order, backend = name.split("_")
-    return getattr(importlib.import_module(f"zener_sym.ham.runtime_{backend}"), order)
+    module = {"numpy": "zener_sym.ham.runtime_numpy", "mpmath": "zener_sym.ham.runtime_mpmath"}
+    return getattr(importlib.import_module(module[backend]), order)
 
 
 def _backend(options):

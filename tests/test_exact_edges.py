@@ -13,7 +13,7 @@ import pytest
 
 import zener_sym as zs
 from zener_sym.exact import mp as exact_mp
-from zener_sym.exact import force_end, solver
+from zener_sym.exact import force_end, phases, solver
 from zener_sym.exact import table as exact_fast
 
 
@@ -146,7 +146,7 @@ def test_worst_options_finish_under_a_time_limit():
 def test_evaluation_budget_stops_a_runaway_solve(monkeypatch):
     """The budget that bounds every solve: with a tiny budget the solve stops with a
     RuntimeError saying why."""
-    monkeypatch.setattr(solver, "eval_budget", lambda lam: 50)
+    monkeypatch.setattr(phases, "eval_budget", lambda lam: 50)
     with pytest.raises(RuntimeError, match="right-hand-side evaluations"):
         solver.solve(1.0)
     with pytest.raises(RuntimeError, match="right-hand-side evaluations"):

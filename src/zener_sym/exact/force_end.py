@@ -26,10 +26,10 @@ compression with delta + (3/2) lambda delta' = 0. The mapping to physical grains
 Two independent paths, as for the plate:
 
 :func:`solve` (scipy)
-    the three phases of :mod:`.solver` (u = sqrt(delta) at both ends, tau in the middle) with the
-    force-free end as a terminal event (phase 2 or 3), the peak of F_c as an event (phase 1 or 2),
-    int F_c^2 as the third state and the dissipation int sqrt(delta) delta'^2 as the fourth (for
-    xi). The solver module itself is untouched.
+    the three phases of the plate (u = sqrt(delta) at both ends, tau in the middle), run by the
+    phase driver of :mod:`.phases` with this reading's data (``grain_contact``): the force-free
+    end as a terminal event (phase 2 or 3), the peak of F_c as an event (phase 1 or 2), int F_c^2
+    as the third state and the dissipation int sqrt(delta) delta'^2 as the fourth (for xi).
 :func:`solve_mp` (mpmath)
     the plate's Taylor solution of :mod:`.mp`, cut at the force-free end: every step is a
     polynomial, so the end (a root of delta + (3/2) lambda v), the peak (a root of F_c') and
@@ -43,20 +43,16 @@ from dataclasses import dataclass
 
 import mpmath
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from .. import params
-from . import mp as _mp
-from .solver import (LAMBDA_MAX, ContactTimes, ExactSolution, _Budget, check_options,
-                     restitution)
-from .solver import solve as _solve_plate
+from . import mp, solver
+from .phases import Contact, Event, Form, Settings, integrate, positive
+from .solver import ContactTimes, ExactSolution, check_options, restitution
 
-__all__ = ["CONTACT_ENDS", "check_contact_end", "ForceEndSolution", "solve", "solve_mp"]
+__all__ = ["CONTACT_ENDS", "check_contact_end", "ForceEndSolution", "grain_contact", "solve", "solve_mp"]
 
 #: The accepted end-of-contact criteria.
 CONTACT_ENDS = ("delta", "force")
-
-_V_SWITCH = 0.5
 
 
 def check_contact_end(contact_end) -> str:
@@ -111,23 +107,22 @@ class ForceEndSolution(ContactTimes):
 
 # --- scipy path ------------------------------------------------------------------------------
 
-def _rhs_u(lam, budget):
+def _u_terms(lam):
     """u-form with J = int F_c^2 and D = int sqrt(delta) delta'^2: dtau/du = 2u/v,
     dw/du = -2u^4/v, dJ/du = 2u F_c^2/v, dD/du = 2u^2 v."""
 
     def f(u, y):
-        budget.spend()
         v = y[1] - lam * u**3
         if abs(v) < 1e-300:
             v = 1e-300 if v >= 0 else -1e-300
         g = 2.0 * u / v
         fc = u**3 + 1.5 * lam * u * v
-        return np.array([g, -g * u**3, g * fc * fc, 2.0 * u * u * v])
+        return g, -g * u**3, g * fc * fc, 2.0 * u * u * v
 
     return f
 
 
-def _rhs_tau(lam, budget):
+def _tau_terms(lam):
     """Middle phase in tau, state (delta, v, g, w, J, D): v = delta' and g = delta + (3/2) lam v
     (F_c = sqrt(delta) g) carried as their own states,
 
@@ -143,24 +138,61 @@ def _rhs_tau(lam, budget):
     k = 1.5 * lam
 
     def f(t, y):
-        budget.spend()
-        d = y[0] if y[0] > 0.0 else 0.0
+        d = positive(y[0])
         s = np.sqrt(d)
         v, g = y[1], y[2]
         fc = s * (d + k * v)
-        return np.array([v, -fc, v - k * s * g, -d * s, fc * fc, s * v * v])
+        return v, -fc, v - k * s * g, -d * s, fc * fc, s * v * v
 
     return f
 
 
-class _Rows:
-    """Dense output restricted to the rows (delta, w) that the plate's history reads."""
+def grain_contact(lam: float) -> Contact:
+    """The grains' contact for the phase driver (lam > 0): the plate's phases with the extra
+    states J = int F_c^2 and D = int sqrt(delta) delta'^2, one middle form (delta, v, g, w, J, D)
+    through the end of compression, the peak of F_c watched in loading and middle, and the
+    force-free end as a terminal event in the middle and in unloading."""
+    k = 1.5 * lam
 
-    def __init__(self, sol):
-        self.sol = sol
+    def velocity_u(u, y):
+        return y[1] - lam * u**3
 
-    def __call__(self, t):
-        return self.sol(t)[[0, 3]]
+    def peak_u(u, y):  # proportional to dF_c/du; F_c = u^3 + k u v
+        v = y[1] - lam * u**3
+        dv = -2.0 * u**4 / v - 3.0 * lam * u**2
+        return 3.0 * u**2 + k * (v + u * dv)
+
+    def peak_t(t, y):  # proportional to dF_c/dtau: 2 delta v + lam v^2 - 2 lam delta F_c
+        d = max(y[0], 0.0)
+        v = y[1]
+        return 2.0 * d * v + lam * v * v - 2.0 * lam * d * np.sqrt(d) * y[2]
+
+    def free_u(u, y):
+        return u * u + k * (y[1] - lam * u**3)
+
+    u_form = Form("u", ("tau", "w", "J", "D"), _u_terms(lam), velocity_u, lam)
+    # g = delta + (3/2) lam v = 0 is the force-free end; v and g get no absolute tolerance
+    middle = Form("tau", ("delta", "v", "g", "w", "J", "D"), _tau_terms(lam), lambda t, y: y[1],
+                  lam, derived={"g": lambda q: q["delta"] + k * q["v"]})
+    return Contact(u_form, (middle,), {
+        "loading": (Event("peak", peak_u, -1),),
+        "middle": (Event("peak", peak_t, -1), Event(_FREE, lambda t, y: y[2], -1, True)),
+        "unloading": (Event(_FREE, free_u, -1, True),)})
+
+
+_FREE = "force-free end"
+
+
+def _peak(legs, lam) -> float:
+    """F_m from the first peak event: in loading (F_c = u^3 + k u v) or else in the middle."""
+    hit = legs[0].hit("peak")
+    if hit is not None:
+        up = float(hit["u"])
+        return up**3 + 1.5 * lam * up * (hit["w"] - lam * up**3)
+    hit = legs[1].hit("peak")
+    if hit is None:
+        raise RuntimeError(f"exact (force end): no peak of the force found at lambda = {lam}")
+    return float(np.sqrt(hit["delta"]) * hit["g"])
 
 
 def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "DOP853") -> ForceEndSolution:
@@ -175,107 +207,20 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
     rtol, atol, method = check_options(rtol, atol, method)
     lam = float(lam)
     if lam == 0.0:  # F_c = delta^{3/2}: the force-free end is delta = 0
-        s = _solve_plate(0.0, rtol=rtol, atol=atol, method=method)
+        s = solver.solve(0.0, rtol=rtol, atol=atol, method=method)
         return ForceEndSolution(lam=0.0, delta_m=s.delta_m, tau_dc=s.tau_dc, tau_d=s.tau_d,
                                 v_end=s.w_end, int_F2=s.int_F2, F_m=s.F_m, xi=0.0, _base=s)
-    budget = _Budget(lam, method, rtol)
-    atols = np.array([atol, 1e-300, atol, atol])
-    k = 1.5 * lam
-    u_cap = min(1.2, lam ** (-1.0 / 3.0))
-
-    def v_half(u, y):
-        return y[1] - lam * u**3 - _V_SWITCH
-
-    v_half.terminal, v_half.direction = True, -1
-
-    def peak_u(u, y):  # proportional to dF_c/du; F_c = u^3 + k u v
-        v = y[1] - lam * u**3
-        dv = -2.0 * u**4 / v - 3.0 * lam * u**2
-        return 3.0 * u**2 + k * (v + u * dv)
-
-    peak_u.direction = -1
-    s1 = solve_ivp(_rhs_u(lam, budget), (0.0, u_cap), [0.0, 1.0, 0.0, 0.0], method=method, rtol=rtol, atol=atols,
-                   events=[v_half, peak_u], dense_output=True)
-    if s1.status != 1:
-        raise RuntimeError(f"exact (force end): loading phase did not reach v = 1/2 at lambda = {lam}")
-    u1 = float(s1.t_events[0][0])
-    tau1, w1, J1, D1 = s1.y_events[0][0]
-    F_m = None
-    if len(s1.t_events[1]):
-        up = float(s1.t_events[1][0])
-        vp = s1.y_events[1][0][1] - lam * up**3
-        F_m = up**3 + k * up * vp
-
-    def v_zero(t, y):
-        return y[1]
-
-    v_zero.direction = -1
-
-    def peak_t(t, y):  # proportional to dF_c/dtau: 2 delta v + lam v^2 - 2 lam delta F_c
-        d = max(y[0], 0.0)
-        v = y[1]
-        return 2.0 * d * v + lam * v * v - 2.0 * lam * d * np.sqrt(d) * y[2]
-
-    peak_t.direction = -1
-
-    def hand_over(t, y):
-        d = max(y[0], 0.0)
-        return y[1] * y[1] - 2.0 * d * d * np.sqrt(d)
-
-    hand_over.terminal, hand_over.direction = True, 1
-
-    def free_t(t, y):  # force-free: g = delta + (3/2) lam v = 0
-        return y[2]
-
-    free_t.terminal, free_t.direction = True, -1
-    t_cap = tau1 + 100.0 + 100.0 * lam
-    v1 = w1 - lam * u1**3
-    # v and g get no absolute tolerance: relative control down to their zeros (as the plate's
-    # phase 2a)
-    atols6 = np.array([atol, 1e-300, 1e-300, 1e-300, atol, atol])
-    y1 = [u1 * u1, v1, u1 * u1 + k * v1, w1, J1, D1]
-    s2 = solve_ivp(_rhs_tau(lam, budget), (tau1, t_cap), y1, method=method, rtol=rtol, atol=atols6, events=[v_zero, peak_t, hand_over, free_t],
-                   dense_output=True)
-    if s2.status != 1 or len(s2.t_events[0]) != 1:
-        raise RuntimeError(f"exact (force end): middle phase failed at lambda = {lam}: {s2.message}")
-    tau_dc = float(s2.t_events[0][0])
-    delta_m = float(s2.y_events[0][0][0])
-    if F_m is None:
-        if not len(s2.t_events[1]):
-            raise RuntimeError(f"exact (force end): no peak of the force found at lambda = {lam}")
-        d, _, g = s2.y_events[1][0][:3]
-        F_m = float(np.sqrt(d) * g)
-    s3 = None
-    if len(s2.t_events[3]):  # the force vanished in the middle phase (large lambda)
-        tau_d = float(s2.t_events[3][0])
-        d, v_end, _, w, J, D = s2.y_events[3][0]
-        d_end = d
-        tau2 = tau_d
-    else:
-        tau2 = float(s2.t_events[2][0])
-        d2, _, _, w2, J2, D2 = s2.y_events[2][0]
-
-        def free_u(u, y):
-            return u * u + k * (y[1] - lam * u**3)
-
-        free_u.terminal, free_u.direction = True, -1
-        s3 = solve_ivp(_rhs_u(lam, budget), (np.sqrt(d2), 0.0), [tau2, w2, J2, D2], method=method, rtol=rtol,
-                       atol=atols, events=free_u, dense_output=True)
-        if s3.status != 1:
-            raise RuntimeError(f"exact (force end): no force-free point before delta = 0 at lambda = {lam}")
-        ue = float(s3.t_events[0][0])
-        tau_d, w, J, D = s3.y_events[0][0]
-        v_end = w - lam * ue**3
-        d_end = ue * ue
-    base = ExactSolution(
-        lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=float(tau_d), w_end=float(w), int_F2=float(J),
-        _load=s1.sol, _mid=_Rows(s2.sol), _unload=s3.sol if s3 is not None else None, _tau1=float(tau1),
-        _tau2=float(tau2), _u_grid1=s1.t, _tau_grid1=s1.y[0],
-        _u_grid3=s3.t if s3 is not None else None, _tau_grid3=s3.y[0] if s3 is not None else None)
-    xi = float(3.0 * lam * D + 0.8 * max(d_end, 0.0) ** 2.5)
-    return ForceEndSolution(lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=float(tau_d),
-                            v_end=-float(restitution(xi, -float(v_end))), int_F2=float(J),
-                            F_m=float(F_m), xi=xi, _base=base)
+    legs = integrate(grain_contact(lam), Settings(lam, rtol, atol, method, "exact (force end)"))
+    dc = legs[1].hit("end of compression")
+    tau_dc, delta_m = float(dc["tau"]), float(dc["delta"])
+    end = legs[-1].end  # the force-free end, in the middle (large lambda) or in unloading
+    tau_d, w, J, D = float(end["tau"]), float(end["w"]), float(end["J"]), end["D"]
+    base = ExactSolution(lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=tau_d, w_end=w,
+                         int_F2=J, legs=legs)
+    xi = float(3.0 * lam * D + 0.8 * max(end["delta"], 0.0) ** 2.5)
+    return ForceEndSolution(lam=lam, delta_m=delta_m, tau_dc=tau_dc, tau_d=tau_d,
+                            v_end=-float(restitution(xi, -float(end["v"]))), int_F2=J,
+                            F_m=float(_peak(legs, lam)), xi=xi, _base=base)
 
 
 # --- mpmath path -----------------------------------------------------------------------------
@@ -313,15 +258,15 @@ def _root_in(poly, h):
     """Root of poly in [0, h] (a sign change between the ends) by bisection-safeguarded Newton."""
     dp = _deriv(poly)
     a, b = mpmath.mpf(0), h
-    fa = _mp._horner(poly, a)
+    fa = mp.horner(poly, a)
     s = h / 2
     for _ in range(200):
-        f = _mp._horner(poly, s)
+        f = mp.horner(poly, s)
         if (f > 0) == (fa > 0):
             a, fa = s, f
         else:
             b = s
-        d = _mp._horner(dp, s) if dp else 0
+        d = mp.horner(dp, s) if dp else 0
         nxt = s - f / d if d else (a + b) / 2
         if not (min(a, b) <= nxt <= max(a, b)):
             nxt = (a + b) / 2
@@ -334,8 +279,8 @@ def _root_in(poly, h):
 def solve_mp(lam, dps: int = 30) -> ForceEndSolution:
     """High-precision force-free end (mpmath); fields are mpf. Same arguments as
     :func:`zener_sym.exact.mp.solve`, which validates them."""
-    sol = _mp.solve(lam, dps=dps)
-    with mpmath.workdps(sol.dps + _mp._GUARD_WORK):
+    sol = mp.solve(lam, dps=dps)
+    with mpmath.workdps(sol.dps + mp.GUARD_WORK):
         L = sol.lam
         k = mpmath.mpf(3) / 2 * L
         if L == 0:
@@ -344,16 +289,16 @@ def solve_mp(lam, dps: int = 30) -> ForceEndSolution:
                                     xi=mpmath.mpf(0), _base=sol)
         F_m = None
         J = mpmath.mpf(0)
-        for ph in sol._phases:
+        for ph in sol.phases:
             for i, st in enumerate(ph.steps):
                 fc, dtau = _fc_poly(ph, st, L)
                 t0 = ph.t_start[i]
                 # peak of F_c: F_c' (in s) changes sign from + to -
                 if F_m is None:
                     dfc = _deriv(fc)
-                    if _mp._horner(dfc, st.h) <= 0:
-                        s = _root_in(dfc, st.h) if _mp._horner(dfc, 0) > 0 else mpmath.mpf(0)
-                        F_m = _mp._horner(fc, s)
+                    if mp.horner(dfc, st.h) <= 0:
+                        s = _root_in(dfc, st.h) if mp.horner(dfc, 0) > 0 else mpmath.mpf(0)
+                        F_m = mp.horner(fc, s)
                 # force-free end, after the end of compression
                 if ph.kind == "tau":
                     g = [st.c[0][j] + k * st.c[1][j] for j in range(len(st.c[0]))]
@@ -362,12 +307,12 @@ def solve_mp(lam, dps: int = 30) -> ForceEndSolution:
                     g[0] += st.x0**2
                     g[1] += 2 * st.x0
                     g[2] += 1
-                past_dc = t0 >= sol.tau_dc or _mp._horner(st.c[1], st.h) < 0
-                if F_m is not None and past_dc and _mp._horner(g, st.h) <= 0:
+                past_dc = t0 >= sol.tau_dc or mp.horner(st.c[1], st.h) < 0
+                if F_m is not None and past_dc and mp.horner(g, st.h) <= 0:
                     s = _root_in(g, st.h)
                     J += _integral(_mul(_mul(fc, fc), dtau), s)
-                    v_end = _mp._horner(st.c[1], s)
-                    tau_d = t0 + s if ph.kind == "tau" else _mp._horner(st.c[0], s)
+                    v_end = mp.horner(st.c[1], s)
+                    tau_d = t0 + s if ph.kind == "tau" else mp.horner(st.c[0], s)
                     return ForceEndSolution(lam=L, delta_m=sol.delta_m, tau_dc=sol.tau_dc, tau_d=tau_d,
                                             v_end=v_end, int_F2=J, F_m=F_m, xi=1 - v_end**2,
                                             _base=sol)

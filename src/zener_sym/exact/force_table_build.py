@@ -151,7 +151,7 @@ def input_files() -> list[pathlib.Path]:
     writes and the solvers it samples."""
     here = pathlib.Path(__file__).resolve().parent
     return [here / name for name in ("force_table_build.py", "force_table_layout.py",
-                                     "force_end.py", "solver.py")]
+                                     "force_end.py", "solver.py", "phases.py")]
 
 
 def render(tables: dict | None = None) -> str:

@@ -54,7 +54,7 @@ DPS_MIN = 15
 #: 1000 already takes about two minutes).
 DPS_MAX = 100
 _GUARD_TOL = 8  # digits by which the per-step tolerance is tighter than the requested dps
-_GUARD_WORK = 15  # extra digits of the working precision
+GUARD_WORK = 15  # extra digits of the working precision
 _MAX_STEPS = 200_000  # per phase; far above what lambda <= LAMBDA_MAX needs
 _V_SWITCH = mpmath.mpf(1) / 2  # relative velocity at which loading hands over from u to tau
 
@@ -91,7 +91,7 @@ class _Phase:
         return self._flt
 
 
-def _horner(c, s):
+def horner(c, s):
     acc = c[-1]
     for ck in reversed(c[:-1]):
         acc = acc * s + ck
@@ -109,7 +109,7 @@ def _horner_d(c, s):
 
 def _poly_root(c, target, h):
     """s between 0 and h with Σ c_k s^k = target (a simple root of a monotone piece), by Newton."""
-    p0, ph = c[0], _horner(c, h)
+    p0, ph = c[0], horner(c, h)
     s = h * (target - p0) / (ph - p0)
     tol = abs(h) * mpmath.mpf(2) ** (-mpmath.mp.prec + 8)
     for _ in range(100):
@@ -206,7 +206,7 @@ class MpSolution(ContactTimes):
     w_end: object
     int_F2: object
     n_steps: tuple
-    _phases: list = field(repr=False)  # the Taylor steps (dense output), too long to print
+    phases: list = field(repr=False)  # the Taylor steps (dense output), too long to print
 
     @property
     def e(self):
@@ -230,10 +230,10 @@ class MpSolution(ContactTimes):
 
     def _locate(self, t):
         """(phase, step index) holding the time t < τ_d."""
-        for ph in reversed(self._phases):
+        for ph in reversed(self.phases):
             if t >= ph.t_start[0]:
                 return ph, bisect.bisect_right(ph.t_start, t) - 1
-        return self._phases[0], 0
+        return self.phases[0], 0
 
     def history_mp(self, taus) -> dict:
         """δ, Ī, sphere velocity 1 − Ī and force δ^{3/2} as lists of mpf at the times ``taus``.
@@ -242,7 +242,7 @@ class MpSolution(ContactTimes):
         """
         taus = [mpmath.mpf(t) for t in np.atleast_1d(np.asarray(taus, dtype=object)).ravel()]
         out = {k: [] for k in ("tau", "delta", "impulse", "velocity", "force")}
-        with mpmath.workdps(self.dps + _GUARD_WORK):
+        with mpmath.workdps(self.dps + GUARD_WORK):
             for t in taus:
                 if t < 0:
                     raise ValueError(f"tau must be >= 0 (contact starts at tau = 0), got {t}")
@@ -253,11 +253,11 @@ class MpSolution(ContactTimes):
                     st = ph.steps[i]
                     if ph.kind == "tau":
                         s = t - st.x0
-                        d, w = _horner(st.c[0], s), _horner(st.c[2], s)
+                        d, w = horner(st.c[0], s), horner(st.c[2], s)
                     else:
                         s = _poly_root(st.c[0], t, st.h) if t != st.c[0][0] else mpmath.mpf(0)
                         u = st.x0 + s
-                        d, w = u * u, _horner(st.c[2], s)
+                        d, w = u * u, horner(st.c[2], s)
                     d = max(d, mpmath.mpf(0))
                 out["tau"].append(t)
                 out["delta"].append(+d)
@@ -276,11 +276,11 @@ class MpSolution(ContactTimes):
         flat = tau.ravel()
         delta = np.zeros_like(flat)
         w = np.full_like(flat, float(self.w_end))
-        for ph in self._phases:
+        for ph in self.phases:
             x0, h, t0, cs = ph.floats()
             idx = np.nonzero((flat >= t0[0]) & (flat < float(self.tau_d)))[0]
-            if ph is not self._phases[-1]:
-                nxt = self._phases[self._phases.index(ph) + 1].t_start[0]
+            if ph is not self.phases[-1]:
+                nxt = self.phases[self.phases.index(ph) + 1].t_start[0]
                 idx = idx[flat[idx] < float(nxt)]
             if idx.size == 0:
                 continue
@@ -365,7 +365,7 @@ def solve(lam, dps: int = 30) -> MpSolution:
                               "the range over which the integrator is tested")
     dps = _check_dps(dps)
     N = _order(dps)
-    with mpmath.workdps(dps + _GUARD_WORK):
+    with mpmath.workdps(dps + GUARD_WORK):
         lam_mp = mpmath.mpf(float(arr.reshape(-1)[0]))
         return _integrate(lam_mp, dps, N)
 
@@ -379,12 +379,12 @@ def _integrate(lam, dps, N):
     for _ in range(_MAX_STEPS):
         c = _jets_u(u, y, lam, N)
         h = _step_size(c, N)
-        done = _horner(c[1], h) <= _V_SWITCH
+        done = horner(c[1], h) <= _V_SWITCH
         if done:
             h = _poly_root(c[1], _V_SWITCH, h)
         p1.steps.append(_Step(u, h, c))
         p1.t_start.append(y[0])
-        y = [_horner(ci, h) for ci in c]
+        y = [horner(ci, h) for ci in c]
         u = u + h
         if done:
             break
@@ -400,14 +400,14 @@ def _integrate(lam, dps, N):
     for _ in range(_MAX_STEPS):
         c = _jets_tau(y, lam, N)
         h = _step_size(c, N)
-        y_new = [_horner(ci, h) for ci in c]
+        y_new = [horner(ci, h) for ci in c]
         if not y_new[0] > 0:  # guard: never step to δ <= 0 in the τ-form
             raise RuntimeError(f"exact_mp: tau phase stepped to delta <= 0 at lambda = {lam}")
         p2.steps.append(_Step(t, h, c))
         p2.t_start.append(t)
         if tau_dc is None and y_new[1] <= 0:
             s = _poly_root(c[1], zero, h)
-            tau_dc, delta_m = t + s, _horner(c[0], s)
+            tau_dc, delta_m = t + s, horner(c[0], s)
         t, y = t + h, y_new
         if tau_dc is not None and y[1] < 0 and y[1] ** 2 >= 2 * y[0] ** 2 * mpmath.sqrt(y[0]):
             break
@@ -424,7 +424,7 @@ def _integrate(lam, dps, N):
         last = -h >= u
         p3.steps.append(_Step(u, h, c))
         p3.t_start.append(y[0])
-        y = [_horner(ci, h) for ci in c]
+        y = [horner(ci, h) for ci in c]
         u = zero if last else u + h
         if last:
             break
@@ -435,4 +435,4 @@ def _integrate(lam, dps, N):
     return MpSolution(lam=lam, dps=dps, delta_m=delta_m, tau_dc=tau_dc, tau_d=tau_d,
                       v_end=v_end, w_end=w_end, int_F2=J_end,
                       n_steps=(len(p1.steps), len(p2.steps), len(p3.steps)),
-                      _phases=[p1, p2, p3])
+                      phases=[p1, p2, p3])

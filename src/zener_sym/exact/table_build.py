@@ -157,53 +157,46 @@ def _rest_time(sol) -> float:
     return brentq(w, sol.tau_dc, sol.tau_d, xtol=1e-15, rtol=1e-15, maxiter=200)
 
 
-def _from_steps(lam: float, sol, t: np.ndarray, four: bool) -> np.ndarray:
-    """States of a tau-phase at the times t, integrated afresh from the last accepted step before
-    each t (all points at once, DOP853 at RTOL in s = (t - t_k) / (t_k+1 - t_k)).
+def _from_steps(leg, t: np.ndarray) -> np.ndarray:
+    """States of a tau-phase (a ``phases.Leg``) at the times t, integrated afresh with the phase's
+    own equations from the last accepted step before each t (all points at once, DOP853 at RTOL
+    in s = (t - t_k) / (t_k+1 - t_k)).
 
     Not ``sol(t)``: at large lambda the phase is stiff (rate 1.5 lambda delta^{1/2}), its steps sit
     at the stability limit and DOP853's dense output between steps is off by up to 7e-9 relative
     in delta (at lambda = 100 matched to the orbit at LAM_U), while the step states are not."""
     from scipy.integrate import solve_ivp
 
+    sol, terms = leg.sol, leg.form.terms
     ts = sol.ts
     k = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, len(ts) - 2)
     y0 = np.atleast_2d(sol(ts[k]))  # [state, point]: a step's own state (interpolant at its start)
     dt = t - ts[k]
     n = y0.shape[0]
 
-    def f(_, y):
-        y = y.reshape(n, -1)
-        d = np.maximum(y[0], 0.0)
-        sd = np.sqrt(d)
-        F = d * sd
-        if four:  # (delta, v, w, J)
-            out = (y[1], -F - 1.5 * lam * sd * y[1], -F, F * F)
-        else:  # (delta, w, J)
-            out = (y[1] - lam * F, -F, F * F)
-        return (np.stack(out) * dt).ravel()
+    def f(x, y):
+        return (np.stack(terms(x, y.reshape(n, -1))) * dt).ravel()
 
     r = solve_ivp(f, (0.0, 1.0), y0.ravel(), method="DOP853", rtol=RTOL, atol=1e-300)
     if r.status != 0:
-        raise RuntimeError(f"table build: re-integration from the steps failed at lambda = {lam}")
+        raise RuntimeError(f"table build: re-integration from the steps failed at lambda = "
+                           f"{leg.form.lam}")
     return r.y[:, -1].reshape(n, -1)
 
 
-def node_history(s, tau: np.ndarray, tau_end: float | None = None):
-    """(delta, w) of the solution ``s`` (``solver.solve`` or ``solve_early``'s, whose middle phase
-    ends at ``tau_end``) at tau, the tau-phases from their steps (``_from_steps``)."""
+def node_history(s, tau: np.ndarray):
+    """(delta, w) of the solution ``s`` (``solver.solve`` or ``solve_early``'s) at tau, the
+    tau-phases from their steps (``_from_steps``), the rest from ``s.history``."""
     tau = np.asarray(tau, dtype=float)
     delta, w = np.empty(tau.shape), np.empty(tau.shape)
-    end = s._tau2 if tau_end is None else tau_end
-    a = (tau > s._tau1) & (tau <= s.tau_dc)
-    b = (tau > s.tau_dc) & (tau < end)
-    rest = ~(a | b)
-    if a.any():
-        y = _from_steps(s.lam, s._mid.before, tau[a], four=True)
-        delta[a], w[a] = y[0], y[2]
-    if b.any():
-        y = _from_steps(s.lam, s._mid.after, tau[b], four=False)
-        delta[b], w[b] = y[0], y[1]
+    where = s.leg_of(tau)
+    rest = np.ones(tau.shape, dtype=bool)
+    for i, leg in enumerate(s.legs):
+        m = where == i
+        if leg.form.kind == "tau" and m.any():
+            y = _from_steps(leg, tau[m])
+            delta[m], w[m] = y[0], y[leg.form.w_row]
+            rest &= ~m
     if rest.any():
         h = s.history(tau[rest])
         delta[rest], w[rest] = h["delta"], h["velocity"]
@@ -256,7 +249,7 @@ def large_node(lam: float, history: bool = True) -> dict:
             delta, w = np.empty(tau.shape), np.empty(tau.shape)
             m = tau < r["tau"]
             if m.any():
-                delta[m], w[m] = node_history(early, tau[m], tau_end=r["tau"])
+                delta[m], w[m] = node_history(early, tau[m])
             if (~m).any():
                 d_U, w_U = node_history(U, t_U + (tau[~m] - r["tau"]) / scale)
                 delta[~m], w[~m] = d_U * scale**-4, w_U * scale**-5
@@ -354,9 +347,10 @@ def build_tables() -> dict:
 
 def input_files() -> list[pathlib.Path]:
     """The sources the table is built from (its inputs hash): this builder, the layout it
-    writes and the solver it samples."""
+    writes and the solver it samples (with its phase driver)."""
     here = pathlib.Path(__file__).resolve().parent
-    return [here / name for name in ("table_build.py", "table_layout.py", "solver.py")]
+    return [here / name for name in ("table_build.py", "table_layout.py", "solver.py",
+                                     "phases.py")]
 
 
 def _fmt_q(a: np.ndarray, quantum: float) -> str:

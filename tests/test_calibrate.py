@@ -232,3 +232,15 @@ def test_the_bridges_law_file_is_what_its_script_writes(tmp_path):
     assert "NOT MEASURED POINTS" in "\n".join(m.comments)
     # the law itself, from its two published constants (v_c = 0.0077 cm/s, exponent 0.234)
     assert np.allclose(m.e, (m.v0 / 0.0077e-2) ** -0.234, atol=5e-5)
+
+
+def test_docs_quote_the_committed_fit():
+    """docs/viscoelastic.md quotes the fit that `zener-sym regen calibration` writes (its
+    freshness is checked in test_regen): the quoted lines are the committed text's."""
+    root = Path(__file__).resolve().parent.parent
+    committed = (root / "docs" / "data" / "calibration_bridges1984.txt").read_text("utf-8")
+    doc = (root / "docs" / "viscoelastic.md").read_text("utf-8")
+    head = committed.splitlines()[:4]
+    assert head[0].startswith("dissipative constant A = ")
+    for line in head:
+        assert "    " + line in doc, line

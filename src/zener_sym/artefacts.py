@@ -224,6 +224,23 @@ def _figures_write(root, texts):
     return [locate(root, rel) for rel in texts]
 
 
+def _calibration_fresh(root):
+    from .report import calibration
+
+    return {calibration.TEXT: calibration.text()}
+
+
+def _calibration_write(root, texts):
+    from .report import calibration
+
+    text_path, chart = locate(root, calibration.TEXT), locate(root, calibration.CHART)
+    text_path.parent.mkdir(parents=True, exist_ok=True)
+    result = calibration.fit()
+    text_path.write_text(calibration.text(result), encoding="utf-8")
+    calibration.write_chart(chart, result)
+    return [text_path, chart]
+
+
 def _peers_fresh(root):
     from .report import peers
 
@@ -339,6 +356,9 @@ ARTEFACTS: tuple = (
              write=_ham_convergence_write, alias="ham-convergence"),
     Artefact("peers", "peers' e(v) against exact (table in docs/viscoelastic.md)",
              ("docs/viscoelastic.md",), _peers_fresh),
+    Artefact("calibration", "the fit of A to the Bridges et al. ice law (docs/viscoelastic.md)",
+             ("docs/data/calibration_bridges1984.txt",), _calibration_fresh,
+             write=_calibration_write),
     Artefact("figures", "the paper's Figs. 3-15 against exact (data and charts)",
              ("docs/figures/fig*.csv", "docs/figures/fig*.png"), _figures_fresh, _figures_same,
              write=_figures_write, alias="figures --out docs/figures"),

@@ -5,9 +5,9 @@ the float64 ham1 summary (zener_sym.ham.spectral.summary_numpy); `zener-sym ham1
 --check` rebuilds and compares numerically (the node values come from floating-point root
 finding and quadrature).
 
-Inputs hash: af2ed3ff25a22826
+Inputs hash: ad40ce68b7050e1e
 """
-INPUTS_HASH = 'af2ed3ff25a22826'
+INPUTS_HASH = 'ad40ce68b7050e1e'
 #: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)
 LAM_CONT = 2.0304532806603661
 #: (kind, start, end) per lambda piece; kind 'lam': Chebyshev variable lambda,

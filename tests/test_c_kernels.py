@@ -291,3 +291,93 @@ def test_edom_cases(lib):
     n = ctypes.POINTER(ctypes.c_double)()
     assert lib.zs_history(1.0, 0, 3, n, n, n, n, n) == 1  # NULL tau with n > 0
     assert lib.zs_history(1.0, 0, 0, n, n, n, n, n) == 0  # nothing to do
+
+
+# --- sanitizers ------------------------------------------------------------------------------
+DRIVER = r"""
+#include <math.h>
+#include <stdio.h>
+#include "zener_sym.h"
+
+int main(void)
+{
+    static const double lams[] = {0.0, 1e-9, 0.5, 1.0, 2.0, 3.5, 4.9, 5.0, 7.0, 10.0, 25.0,
+                                  80.0, 300.0, 999.0, 1000.0};
+    static const double bad[] = {-1.0, 1001.0, 1e308};
+    double tau[700], d[700], v[700], f[700], I[700];
+    zs_summary_t s;
+    size_t i, j, n = 700;
+    int rc = 0;
+    for (j = 0; j < sizeof lams / sizeof lams[0]; j++) {
+        rc |= zs_summary(lams[j], ZS_DELTA, &s);
+        for (i = 0; i < n; i++)
+            tau[i] = 1.1 * s.tau_d * (double)i / (double)(n - 1);
+        rc |= zs_history(lams[j], ZS_DELTA, n, tau, d, v, f, I);
+        rc |= zs_history(lams[j], ZS_DELTA, n, tau, NULL, NULL, f, NULL);
+        printf("%.17g %.17g %.17g %.17g\n", s.e, s.tau_d, d[n / 3], I[n / 2]);
+        printf("%.17g\n", zs_lam_for_e(s.e, ZS_DELTA));
+        if (lams[j] < ZS_LAM_CRIT) {
+            rc |= zs_ham0_history(lams[j], n, tau, d, f);
+            rc |= zs_ham1_history(lams[j], 60, tau, d, f);
+            rc |= zs_ham1_summary(lams[j], &s);
+            printf("%.17g %.17g\n", d[20], s.e);
+        }
+    }
+    if (rc != 0)
+        return 3;
+    for (j = 0; j < sizeof bad / sizeof bad[0]; j++) {
+        if (zs_summary(bad[j], ZS_DELTA, &s) != ZS_EDOM || !isnan(s.e))
+            return 4;
+        if (zs_history(bad[j], ZS_DELTA, n, tau, d, v, f, I) != ZS_EDOM || !isnan(d[0]))
+            return 5;
+        if (zs_ham1_history(bad[j], n, tau, d, f) != ZS_EDOM || !isnan(f[n - 1]))
+            return 6;
+    }
+    if (zs_summary(1.0, ZS_FORCE + 1, &s) != ZS_EDOM || !isnan(zs_lam_for_e(2.0, ZS_DELTA)))
+        return 7;
+    return 0;
+}
+"""
+
+
+def test_sanitized_driver(tmp_path, lib):
+    """Every entry point under -fsanitize=address,undefined (any report aborts the run), and the
+    values it prints equal the optimized library's."""
+    (tmp_path / "driver.c").write_text(DRIVER)
+    exe = tmp_path / "driver"
+    _compile([CC, *STRICT, "-O1", "-g", "-fsanitize=address,undefined",
+              "-fno-sanitize-recover=all", "-I", str(C_DIR), str(tmp_path / "driver.c"),
+              str(C_DIR / "zener_sym.c"), "-o", str(exe), "-lm"], tmp_path)
+    r = subprocess.run([str(exe)], capture_output=True, text=True,
+                       env={"ASAN_OPTIONS": "detect_leaks=1", "PATH": "/usr/bin:/bin"})
+    assert r.returncode == 0, f"sanitized driver failed ({r.returncode}):\n{r.stderr[-3000:]}"
+    assert "runtime error" not in r.stderr and "AddressSanitizer" not in r.stderr
+    first = [float(x) for x in r.stdout.split("\n")[0].split()]
+    _, s = c_summary(lib, 0.0)
+    assert first[:2] == pytest.approx([s["e"], s["tau_d"]], rel=1e-15)
+
+
+# --- the DEM example -------------------------------------------------------------------------
+def test_dem_wall_example_converges_at_second_order(tmp_path):
+    """examples/c/dem_wall.c: its velocity Verlet e and contact time against zs_summary's; the
+    error of e falls about 4x when dt halves (the stepper's O(dt^2)), the contact time's stays
+    within the same O(dt^2) bound."""
+    exe = tmp_path / "dem_wall"
+    _compile([CC, *STRICT, "-O2", "-I", str(C_DIR), str(ROOT / "examples" / "c" / "dem_wall.c"),
+              str(C_DIR / "zener_sym.c"), "-o", str(exe), "-lm"], tmp_path)
+    rows = {}
+    for steps in (200, 400):
+        r = subprocess.run([str(exe), str(steps)], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        vals = [float(x) for x in r.stdout.strip().splitlines()[-1].split()]
+        rows[steps] = vals
+        e, e_zs, t, t_zs = vals[1], vals[2], vals[4], vals[5]
+        assert abs(e - e_zs) / e_zs < 10.0 / steps**2
+        assert abs(t - t_zs) / t_zs < 10.0 / steps**2
+    err = {n: abs(v[1] - v[2]) for n, v in rows.items()}
+    assert 3.5 < err[200] / err[400] < 4.6, err
+    # the Python summary at the example's lambda (printed first) agrees with the C one it used
+    r = subprocess.run([str(exe), "200"], capture_output=True, text=True)
+    lam = float(r.stdout.split()[1])
+    assert rows[200][2] == pytest.approx(
+        float(PY["exact_table"].summary(np.array([lam]))["e"][0]), rel=1e-5)

@@ -63,4 +63,7 @@ def run(quick: bool = False) -> list[dict]:
     from . import exact_fast_targets  # imports this module: imported when run
 
     rows += exact_fast_targets.run(quick=quick)
+    from . import c_targets  # the emitted C kernels beside numpy (issue 25)
+
+    rows += c_targets.run(quick=quick)
     return rows

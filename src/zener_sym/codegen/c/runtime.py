@@ -85,6 +85,7 @@ TYPES = r'''#include <math.h>
 #define ZS__MAX_LAMDEG @MAX_LAMDEG@
 #define ZS__MAX_SUM @MAX_SUM@
 #define ZS__MAX_H1 @MAX_H1@
+#define ZS__BLOCK 256 /* points per block of a history */
 #define ZS__NSUM 6   /* delta_m, tau_dc, log_tau_d, log_e, int_F2, rest_over_lam */
 
 /* one coefficient matrix [rows: time degree][cols: lambda degree], Chebyshev in both */
@@ -169,7 +170,9 @@ static void zs__core(const zs__exact_table *t, double lam, int history, zs__core
     for (f = 0; f < ZS__NSUM; f++)
         if (t->sum_len[i * ZS__NSUM + f] > deg)
             deg = t->sum_len[i * ZS__NSUM + f];
-    /* T_k(x) by the recurrence (numpy's chebvander), summed in order of k */
+    /* T_k(x) by the recurrence and each sum in order of k, as numpy's chebvander and
+       exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
+       tau_w0, tau_d) falls in the same piece on both sides */
     T[0] = 1.0;
     if (deg > 1)
         T[1] = x;
@@ -189,8 +192,12 @@ static void zs__core(const zs__exact_table *t, double lam, int history, zs__core
     c->tau_d = exp(c->v[2]);
     /* e from the energy loss while xi < 1/2 (exact.solver.restitution), else exp(log e) */
     xi = 2.0 * lam * c->v[4];
-    e_direct = exp(c->v[3]);
-    c->e = xi < 0.5 ? sqrt(1.0 - xi > 0.0 ? 1.0 - xi : 0.0) : e_direct;
+    if (xi < 0.5) {
+        c->e = sqrt(1.0 - xi > 0.0 ? 1.0 - xi : 0.0);
+    } else {
+        e_direct = exp(c->v[3]);
+        c->e = e_direct;
+    }
     c->tau_w0 = c->v[1] + lam * c->v[5];
 }
 
@@ -220,7 +227,7 @@ int zs_summary(double lam, int contact_end, zs_summary_t *out)
     out->tau_dr = tau_dr;
     out->eta = tau_dr / c.v[1];
     out->e = c.e;
-    out->F_m = pow(c.v[0], 1.5);
+    out->F_m = c.v[0] * sqrt(c.v[0]); /* delta_m^{3/2} */
     out->impulse = 1.0 + c.e;
     out->int_F2 = c.v[4];
     out->xi = 2.0 * lam * c.v[4];
@@ -308,7 +315,7 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
     zs__piece_t P[4];
     double Tl[ZS__MAX_LAMDEG], tau_s, inf = HUGE_VAL, tau_dc, imp_end;
     int p, s, log_piece;
-    size_t i;
+    size_t i0;
     t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
     if (t == NULL || !(lam >= t->lam_min && lam <= t->hist_max) || !zs__tau_ok(n, tau)) {
         zs__fill_nan(n, delta);
@@ -341,18 +348,23 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
     P[3].a = t->piece[3].n_sub * (double)t->piece[3].n_sub / (c.tau_d - c.tau_w0);
     P[3].d = c.tau_d;
     imp_end = 1.0 + c.e;
-    for (i = 0; i < n; i++) {
-        double tt = tau[i], z, x, f, I, g, d;
-        int k, sub, j;
-        zs__piece_t *Q;
-        if (tt > tau_dc)
-            p = 1 + (tt >= tau_s) + (tt >= c.tau_w0) + (tt >= c.tau_d);
-        else
-            p = 0;
-        if (p == 4) { /* after the contact */
-            d = 0.0;
-            I = imp_end;
-        } else {
+    /* blocks of points in three passes (piece and local variable; Horner; exp and outputs):
+       the Horner pass has no calls, so the processor overlaps the points' chains */
+    for (i0 = 0; i0 < n; i0 += ZS__BLOCK) {
+        size_t nb = n - i0 < ZS__BLOCK ? n - i0 : ZS__BLOCK, b;
+        int pc[ZS__BLOCK], sb[ZS__BLOCK];
+        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK];
+        for (b = 0; b < nb; b++) {
+            double tt = tau[i0 + b], z;
+            int k, sub;
+            zs__piece_t *Q;
+            if (tt > tau_dc)
+                p = 1 + (tt >= tau_s) + (tt >= c.tau_w0) + (tt >= c.tau_d);
+            else
+                p = 0;
+            pc[b] = p;
+            if (p == 4)
+                continue;
             Q = &P[p];
             k = t->piece[p].n_sub;
             if (p == 0) {
@@ -360,6 +372,9 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             } else if (p == 3) {
                 z = sqrt((Q->d - tt) * Q->a);
             } else {
+                /* u = ln(1 + ts i1) + ts i3 - ln(1 + te i2) (table_build.lin_log); log1p, not
+                   one log of the ratio: on a short piece u is small and a = k / (u1 - u0)
+                   large, so u needs its relative accuracy */
                 double ts = tt - Q->s;
                 z = -Q->u0;
                 if (Q->i3 != 0.0)
@@ -373,33 +388,52 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             if (!(z >= 0.0)) /* rounding at a piece's start (or a NaN): the first sub-piece */
                 z = 0.0;
             sub = z < (double)k ? (int)z : k - 1;
-            x = z - sub;
-            x *= 2.0;
-            x -= 1.0;
+            xs[b] = 2.0 * (z - sub) - 1.0;
+            sb[b] = sub;
             if (Q->deg[sub] == 0)
                 zs__contract(&t->piece[p], c.ip, sub, Tl, Q);
-            j = Q->deg[sub] - 1;
-            f = Q->m[sub][j][0];
-            I = Q->m[sub][j][1];
-            for (j = j - 1; j >= 0; j--) {
-                f = f * x + Q->m[sub][j][0];
-                I = I * x + Q->m[sub][j][1];
-            }
-            g = exp(f);
-            if (p == 0)
-                g *= tt;
-            else if (p == 3)
-                g *= Q->d - tt;
-            d = g;
         }
-        if (delta != NULL)
-            delta[i] = d;
-        if (impulse != NULL)
-            impulse[i] = I;
-        if (velocity != NULL)
-            velocity[i] = 1.0 - I;
-        if (force != NULL)
-            force[i] = sqrt(d) * d;
+        for (b = 0; b < nb; b++) {
+            double (*m)[2];
+            double x = xs[b], f, I;
+            int j;
+            if (pc[b] == 4) {
+                fv[b] = 0.0;
+                Iv[b] = imp_end;
+                continue;
+            }
+            m = P[pc[b]].m[sb[b]];
+            j = P[pc[b]].deg[sb[b]] - 1;
+            f = m[j][0];
+            I = m[j][1];
+            for (j = j - 1; j >= 0; j--) {
+                f = f * x + m[j][0];
+                I = I * x + m[j][1];
+            }
+            fv[b] = f;
+            Iv[b] = I;
+        }
+        for (b = 0; b < nb; b++) {
+            double tt = tau[i0 + b], d, I = Iv[b];
+            p = pc[b];
+            if (p == 4) {
+                d = 0.0;
+            } else {
+                d = exp(fv[b]);
+                if (p == 0)
+                    d *= tt;
+                else if (p == 3)
+                    d *= P[3].d - tt;
+            }
+            if (delta != NULL)
+                delta[i0 + b] = d;
+            if (impulse != NULL)
+                impulse[i0 + b] = I;
+            if (velocity != NULL)
+                velocity[i0 + b] = 1.0 - I;
+            if (force != NULL)
+                force[i0 + b] = sqrt(d) * d;
+        }
     }
     return ZS_OK;
 }
@@ -575,7 +609,7 @@ int zs_ham1_summary(double lam, zs_summary_t *out)
     out->tau_dc = v[1];
     out->tau_d = exp(v[2]);
     out->e = exp(v[3]);
-    out->F_m = pow(v[0], 1.5);
+    out->F_m = v[0] * sqrt(v[0]);
     out->impulse = v[4];
     out->int_F2 = v[5];
     out->tau_dr = out->tau_d - out->tau_dc;

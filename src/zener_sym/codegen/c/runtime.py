@@ -270,12 +270,12 @@ static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl
         const zs__mat *m = (fld == 0 ? tp->f : tp->I) + ip * tp->n_sub + sub;
         for (j = 0; j < ZS__MAX_ROWS; j++)
             c[fld][j] = 0.0;
-        for (j = 0; j < m->rows; j++) {
-            const double *row = m->c + j * m->cols;
-            double s = 0.0;
-            for (k = 0; k < m->cols; k++)
-                s += row[k] * Tl[k];
-            c[fld][j] = s;
+        /* k outer: each row's sum is its own accumulator, so the rows' additions overlap (one
+           row at a time waits on every addition's latency) */
+        for (k = 0; k < m->cols; k++) {
+            const double *col = m->c + k, tk = Tl[k];
+            for (j = 0; j < m->rows; j++)
+                c[fld][j] += col[j * m->cols] * tk;
         }
         if (m->rows > deg)
             deg = m->rows;

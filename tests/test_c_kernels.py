@@ -35,12 +35,20 @@ pytestmark = pytest.mark.skipif(CC is None, reason="no C compiler (gcc or cc) on
 
 # --- the Python side, imported in one place ---------------------------------------------------
 def _python():
-    """The Python references (one place: these imports may move)."""
+    """The Python references (one place: these imports may move). ``exact`` is the exact model's
+    table backend through the public api; ``table`` the generated table module, read as data
+    (piece ends, layout constants)."""
     from zener_sym import api
-    from zener_sym.exact import table as exact_table
-    from zener_sym.generated import ham0_numpy, ham1_numpy
+    from zener_sym.generated import exact_table, ham0_numpy, ham1_numpy
 
-    return {"api": api, "exact_table": exact_table, "ham0": ham0_numpy, "ham1": ham1_numpy}
+    def exact_summary(lam):
+        return api.summary(np.atleast_1d(lam), model="exact", backend="table")
+
+    def exact_history(lam, tau):
+        return api.history(lam, tau, model="exact", backend="table")
+
+    return {"api": api, "exact_summary": exact_summary, "exact_history": exact_history,
+            "table": exact_table, "ham0": ham0_numpy, "ham1": ham1_numpy}
 
 
 PY = _python()
@@ -119,9 +127,7 @@ def test_strict_c99_and_cxx(tmp_path):
 
 # --- exact model -----------------------------------------------------------------------------
 def _edges():
-    from zener_sym.generated import exact_table as t
-
-    return [float(x) for x in t.LAM_PIECES]
+    return [float(x) for x in PY["table"].LAM_PIECES]
 
 
 def _lams():
@@ -134,22 +140,29 @@ def test_exact_summary_matches_python(lib):
     for lam in _lams():
         rc, c = c_summary(lib, lam)
         assert rc == 0
-        py = PY["exact_table"].summary(np.array([lam]))
+        py = PY["exact_summary"](lam)
         for f in FIELDS:
-            want = float(py[f][0])
+            want = float(getattr(py, f)[0])
             assert c[f] == pytest.approx(want, rel=1e-14, abs=1e-300), (lam, f)
 
 
 def _piece_times(lam):
-    """Times at the ends of every time piece (and of their sub-pieces' neighbourhood) and a
-    grid, from the Python table's own summary (tau_dc, tau_s, tau_w0, tau_d)."""
-    from zener_sym.exact import table_build as build
-
-    t = PY["exact_table"]
-    v, ip, _ = t._core(np.array([lam]), history=True)
-    log = bool(t._tables()["log"][ip[0]])
-    tau_dc, tau_w0, tau_d = float(v["tau_dc"][0]), float(v["tau_w0"][0]), float(v["tau_d"][0])
-    tau_s = float(build.split_time(np.array(lam), np.array(log), tau_dc, tau_w0))
+    """Times at the ends of every time piece (tau_dc; tau_s and tau_w0 of the recovery pieces;
+    tau_d), their neighbouring doubles and a grid over the contact. The ends are evaluated here
+    from the generated table's coefficients with numpy's chebval and the table's layout
+    constants (tau_w0 = tau_dc + lambda rest_over_lam; above LOG_FROM tau_s = tau_dc + lambda
+    (S_ORBIT + S_TRANSIENT lambda^(-5/3)), table_build.split_time), not by the code under test."""
+    t = PY["table"]
+    edges = np.array(t.LAM_PIECES, dtype=float)
+    i = min(int(np.searchsorted(edges, lam, side="right")) - 1, len(edges) - 2)
+    a, b = edges[i], edges[i + 1]
+    log = a >= t.LOG_FROM
+    g, ga, gb = (np.log(lam), np.log(a), np.log(b)) if log else (lam, a, b)
+    x = np.clip((2 * g - ga - gb) / (gb - ga), -1, 1)
+    v = {k: float(np.polynomial.chebyshev.chebval(x, t.SUMMARY[k][i])) for k in t.SUMMARY}
+    tau_dc, tau_d = v["tau_dc"], float(np.exp(v["log_tau_d"]))
+    tau_w0 = tau_dc + lam * v["rest_over_lam"]
+    tau_s = (tau_dc + lam * (t.S_ORBIT + t.S_TRANSIENT * lam ** (-5 / 3))) if log else tau_w0
     ends = [0.0, tau_dc, tau_s, tau_w0, tau_d]
     pts = list(ends) + [np.nextafter(x, 0) for x in ends[1:]] + [np.nextafter(x, np.inf)
                                                                   for x in ends]
@@ -162,34 +175,34 @@ def test_exact_history_matches_python(lib):
         tau, v = _piece_times(lam)
         rc, c = c_history(lib, lam, tau)
         assert rc == 0
-        py = PY["exact_table"].history(np.full(tau.shape, lam), tau)
-        dm = float(v["delta_m"][0])
+        py = PY["exact_history"](lam, tau)
+        dm = v["delta_m"]
         scale = {"delta": dm, "force": dm**1.5, "impulse": 1.0, "velocity": 1.0}
         for f, s in scale.items():
-            err = np.abs(c[f] - py[f])
+            err = np.abs(c[f] - getattr(py, f))
             # relative to the value where it is of the field's scale, to the scale near the
             # zeros (tau = 0, tau_d), where the value is ill-conditioned for any evaluation
-            bad = err > 1e-14 * np.maximum(np.abs(py[f]), s)
-            assert not bad.any(), (lam, f, tau[bad][:3], c[f][bad][:3], py[f][bad][:3])
+            bad = err > 1e-14 * np.maximum(np.abs(getattr(py, f)), s)
+            assert not bad.any(), (lam, f, tau[bad][:3], c[f][bad][:3], getattr(py, f)[bad][:3])
 
 
 def test_exact_history_pointwise_relative(lib):
     """delta relative pointwise (1e-14) away from the zeros at tau = 0 and tau_d."""
     for lam in (0.0, 0.7, 3.0, 42.0, 1000.0):
         tau, v = _piece_times(lam)
-        td = float(np.exp(v["log_tau_d"][0]))
+        td = float(np.exp(v["log_tau_d"]))
         tau = tau[(tau > 1e-3 * td) & (tau < 0.999 * td)]
         _, c = c_history(lib, lam, tau)
-        py = PY["exact_table"].history(np.full(tau.shape, lam), tau)
-        np.testing.assert_allclose(c["delta"], py["delta"], rtol=1e-14, atol=0)
-        np.testing.assert_allclose(c["impulse"], py["impulse"], rtol=1e-14, atol=0)
+        py = PY["exact_history"](lam, tau)
+        np.testing.assert_allclose(c["delta"], py.delta, rtol=1e-14, atol=0)
+        np.testing.assert_allclose(c["impulse"], py.impulse, rtol=1e-14, atol=0)
 
 
 def test_lam_for_e_inverts_python_e(lib):
     """lambda(e) against brentq on the Python table's e(lambda), and the round trip."""
     from scipy.optimize import brentq
 
-    e_of = lambda x: float(PY["exact_table"].summary(np.array([x]))["e"][0])  # noqa: E731
+    e_of = lambda x: float(PY["exact_summary"](x).e[0])  # noqa: E731
     for e in (0.999, 0.95, 0.8, 0.5, 0.2, 0.05, 1e-3, 1e-6):
         lam = lib.zs_lam_for_e(e, 0)
         ref = brentq(lambda x: e_of(x) - e, 0.0, 1000.0, xtol=1e-17, rtol=8.9e-16)
@@ -379,8 +392,7 @@ def test_dem_wall_example_converges_at_second_order(tmp_path):
     # the Python summary at the example's lambda (printed first) agrees with the C one it used
     r = subprocess.run([str(exe), "200"], capture_output=True, text=True)
     lam = float(r.stdout.split()[1])
-    assert rows[200][2] == pytest.approx(
-        float(PY["exact_table"].summary(np.array([lam]))["e"][0]), rel=1e-5)
+    assert rows[200][2] == pytest.approx(float(PY["exact_summary"](lam).e[0]), rel=1e-5)
 
 
 def test_bench_driver_runs(tmp_path):

@@ -17,12 +17,13 @@ sources (this package included) and the two table files.
 """
 from __future__ import annotations
 
+import hashlib
 import pathlib
 
 import numpy as np
 import sympy
 
-from .. import generated_dir, inputs_hash
+from .. import derivation_dir, generated_dir
 from . import ham as _ham
 from . import runtime as _rt
 from . import tables as _tables
@@ -45,10 +46,22 @@ _HERE = pathlib.Path(__file__).resolve().parent
 
 
 def _inputs() -> list[pathlib.Path]:
+    """Everything the C files are made from: the derivation, the codegen (this package too) and
+    the tables."""
     gen = generated_dir()
-    files = sorted(_HERE.glob("*.py"))
-    files += [gen / f for _, _, f in EXACT_TABLES if (gen / f).exists()] + [gen / HAM1_TABLE]
+    files = sorted(derivation_dir().glob("*.py")) + sorted(_HERE.parent.glob("*.py"))
+    files += sorted(_HERE.glob("*.py"))
+    files += [gen / f for _, _, f in EXACT_TABLES] + [gen / HAM1_TABLE]
     return files
+
+
+def inputs_hash() -> str:
+    """SHA-256 (16 hex digits) of ``_inputs()``: names and text, line ends normalised."""
+    h = hashlib.sha256()
+    for f in _inputs():
+        h.update(f.name.encode())
+        h.update(f.read_bytes().replace(b"\r\n", b"\n"))
+    return h.hexdigest()[:16]
 
 
 def _c_header(description: str) -> str:
@@ -59,7 +72,7 @@ def _c_header(description: str) -> str:
             " * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.\n"
             " *\n"
             f" * Sources: {', '.join(srcs)}\n"
-            f" * Derivation inputs hash: {inputs_hash(_inputs())}\n"
+            f" * Inputs hash: {inputs_hash()}\n"
             f" * SymPy version: {sympy.__version__}\n */\n")
 
 

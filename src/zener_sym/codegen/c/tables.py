@@ -56,6 +56,11 @@ def _log_rounded(x: float) -> float:
 
 def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
     """C text defining ``static const zs__exact_table zs__tab_<name>``, and its sizes."""
+    pieces = tuple(ns.get("TIME_PIECES", TIME_PIECES))
+    if pieces != TIME_PIECES or tuple(ns.get("HISTORY_KEYS", ("f", "I"))) != ("f", "I"):
+        raise ValueError(f"table {name}: time pieces {pieces}; the C runtime evaluates "
+                         f"{TIME_PIECES} with fields ('f', 'I') (add the new maps to "
+                         "codegen/c/runtime.py first)")
     edges = [float(x) for x in ns["LAM_PIECES"]]
     n_lam = len(edges) - 1
     log_from = float(ns["LOG_FROM"])

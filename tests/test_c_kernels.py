@@ -203,12 +203,29 @@ def test_lam_for_e_inverts_python_e(lib):
     from scipy.optimize import brentq
 
     e_of = lambda x: float(PY["exact_summary"](x).e[0])  # noqa: E731
-    for e in (0.999, 0.95, 0.8, 0.5, 0.2, 0.05, 1e-3, 1e-6):
+    xi_of = lambda x: float(PY["exact_summary"](x).xi[0])  # noqa: E731
+    for e in (1 - 1e-12, 0.999999, 0.999, 0.95, 0.8, 0.5, 0.2, 0.05, 1e-3, 1e-6):
         lam = lib.zs_lam_for_e(e, 0)
-        ref = brentq(lambda x: e_of(x) - e, 0.0, 1000.0, xtol=1e-17, rtol=8.9e-16)
+        xi = (1 - e) * (1 + e)
+        if xi < 0.5:  # near e = 1 lambda is conditioned by xi = 1 - e^2, not by e
+            ref = brentq(lambda x: xi_of(x) - xi, 0.0, 1000.0, xtol=1e-300, rtol=8.9e-16)
+            assert xi_of(lam) == pytest.approx(xi, rel=1e-14)
+        else:
+            ref = brentq(lambda x: e_of(x) - e, 0.0, 1000.0, xtol=1e-17, rtol=8.9e-16)
+            assert e_of(lam) == pytest.approx(e, rel=1e-14)
         assert lam == pytest.approx(ref, rel=1e-12), e
-        assert e_of(lam) == pytest.approx(e, rel=1e-14)
     assert lib.zs_lam_for_e(1.0, 0) == 0.0
+
+
+def test_lam_for_e_matches_python_inverse(lib):
+    """Against the package's own inverse (``zs.lam_for``, the exact tables' safeguarded Newton)
+    where this tree has it."""
+    lam_for = getattr(PY["api"], "lam_for", None)
+    if lam_for is None:
+        pytest.skip("zener_sym.api.lam_for is not in this tree (it comes with the inverse's "
+                    "branch); checked against brentq above")
+    for e in (1 - 1e-9, 0.99, 0.9, 0.7, 0.5, 0.3, 0.1, 0.01, 1e-5):
+        assert lib.zs_lam_for_e(e, 0) == pytest.approx(lam_for(e=e), rel=1e-12), e
 
 
 # --- HAM kernels -----------------------------------------------------------------------------

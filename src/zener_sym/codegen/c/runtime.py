@@ -438,12 +438,14 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
     return ZS_OK;
 }
 
-/* e(lambda) of a table */
-static double zs__e_of(const zs__exact_table *t, double lam)
+/* the quantity the inverse solves for: xi = 2 lambda int_F2 (increasing) where the target's
+   xi = 1 - e^2 is below 1/2, as e itself is formed there (exact.solver.restitution), so lambda
+   keeps its relative accuracy as e -> 1; e (decreasing) below */
+static double zs__q_of(const zs__exact_table *t, double lam, int use_xi)
 {
     zs__core_t c;
     zs__core(t, lam, 0, &c);
-    return c.e;
+    return use_xi ? 2.0 * lam * c.v[4] : -c.e;
 }
 
 /* ordered 64-bit key of a double >= 0 (bisection on the representable numbers) */
@@ -465,23 +467,28 @@ double zs_lam_for_e(double e, int contact_end)
 {
     const zs__exact_table *t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
     unsigned long long lo, hi;
-    double e_top;
+    double xi_t, q, q_top;
+    int use_xi;
     if (t == NULL || !(e > 0.0 && e <= 1.0))
         return zs__nan();
-    if (e >= zs__e_of(t, t->lam_min))
+    if (e == 1.0)
         return t->lam_min;
-    e_top = zs__e_of(t, t->lam_max);
-    if (e < e_top)
+    xi_t = (1.0 - e) * (1.0 + e);
+    use_xi = xi_t < 0.5;
+    q = use_xi ? xi_t : -e;
+    /* the target beyond the table's reach (e below e(ZS_LAM_MAX)) */
+    if (!(-e <= zs__q_of(t, t->lam_max, 0)))
         return zs__nan();
-    if (e == e_top)
+    q_top = zs__q_of(t, t->lam_max, use_xi);
+    if (q >= q_top)
         return t->lam_max;
-    /* e(lambda) decreases: bisection over the doubles of [lam_min, lam_max] to the last ulp,
-       keeping e(lo) > e >= e(hi); at most 64 steps */
+    /* q(lambda) increases: bisection over the doubles of [lam_min, lam_max] to the last ulp,
+       keeping q(lo) < q <= q(hi); at most 64 steps */
     lo = zs__key(t->lam_min);
     hi = zs__key(t->lam_max);
     while (hi - lo > 1) {
         unsigned long long mid = lo + (hi - lo) / 2;
-        if (zs__e_of(t, zs__from_key(mid)) > e)
+        if (zs__q_of(t, zs__from_key(mid), use_xi) < q)
             lo = mid;
         else
             hi = mid;
@@ -489,7 +496,7 @@ double zs_lam_for_e(double e, int contact_end)
     /* the nearer of the two neighbours */
     {
         double l0 = zs__from_key(lo), l1 = zs__from_key(hi);
-        return zs__e_of(t, l0) - e < e - zs__e_of(t, l1) ? l0 : l1;
+        return q - zs__q_of(t, l0, use_xi) < zs__q_of(t, l1, use_xi) - q ? l0 : l1;
     }
 }
 

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/ham1_table.py
- * Inputs hash: 47cc2e5d81e52210
+ * Inputs hash: 2c7d04f9444f35b7
  * SymPy version: 1.14.0
  */
 #include <math.h>
@@ -13193,17 +13193,15 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             } else if (p == 3) {
                 z = sqrt((Q->d - tt) * Q->a);
             } else {
-                /* u = ln(1 + ts i1) + ts i3 - ln(1 + te i2) (table_build.lin_log); log1p, not
-                   one log of the ratio: on a short piece u is small and a = k / (u1 - u0)
-                   large, so u needs its relative accuracy */
-                double ts = tt - Q->s;
+                /* u = ln(1 + p) + ts i3 - ln(1 + q), p = ts i1, q = te i2 (table_build.lin_log),
+                   the logarithms as one, ln(1 + (p - q) / (1 + q)): log1p of a small argument
+                   keeps u's relative accuracy on a short piece (where u is small and
+                   a = k / (u1 - u0) large), at the cost of one log1p a point instead of two */
+                double ts = tt - Q->s, pp = ts * Q->i1, qq = (Q->e - tt) * Q->i2;
                 z = -Q->u0;
                 if (Q->i3 != 0.0)
                     z += ts * Q->i3;
-                if (Q->i1 != 0.0)
-                    z += log1p(ts * Q->i1);
-                if (Q->i2 != 0.0)
-                    z -= log1p((Q->e - tt) * Q->i2);
+                z += log1p((pp - qq) / (1.0 + qq));
                 z *= Q->a;
             }
             if (!(z >= 0.0)) /* rounding at a piece's start (or a NaN): the first sub-piece */

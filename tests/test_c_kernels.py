@@ -41,6 +41,11 @@ def _python():
     from zener_sym import api
     from zener_sym.generated import exact_table, ham0_numpy, ham1_numpy
 
+    try:  # the Gauss-Jacobi rule of the first-order integrals (moving to zener_sym.numerics)
+        from zener_sym.numerics import sqrt_integrals as quadrature
+    except ImportError:
+        from zener_sym.ham import quadrature
+
     def exact_summary(lam):
         return api.summary(np.atleast_1d(lam), model="exact", backend="table")
 
@@ -48,7 +53,8 @@ def _python():
         return api.history(lam, tau, model="exact", backend="table")
 
     return {"api": api, "exact_summary": exact_summary, "exact_history": exact_history,
-            "table": exact_table, "ham0": ham0_numpy, "ham1": ham1_numpy}
+            "table": exact_table, "ham0": ham0_numpy, "ham1": ham1_numpy,
+            "quadrature": quadrature}
 
 
 PY = _python()
@@ -263,6 +269,15 @@ def test_ham1_history_matches_numpy(lib):
         np.testing.assert_allclose(f, ref**1.5, rtol=1e-12, atol=1e-12)
         m = PY["api"].history(lam, tau, model="ham1", fields=("delta", "force"))
         np.testing.assert_allclose(d, m.delta, rtol=1e-12, atol=1e-12)
+
+
+def test_ham1_rule_is_the_numpy_kernels(lib):
+    """The C file's Gauss-Jacobi rule has the numpy kernels' size and cut (codegen cannot import
+    that helper, so it keeps its own copy of the two numbers)."""
+    text = (C_DIR / "zener_sym.c").read_text()
+    q = PY["quadrature"]
+    assert f"#define ZS__GJ_N {q.N_NODES}\n" in text
+    assert f"#define ZS__GJ_CUT {float(q.CUT)!r}\n" in text
 
 
 def test_ham1_summary_matches_python(lib):

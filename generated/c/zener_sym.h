@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/ham1_table.py
- * Inputs hash: 2c7d04f9444f35b7
+ * Inputs hash: 0d550fe889a385c7
  * SymPy version: 1.14.0
  */
 #ifndef ZENER_SYM_H
@@ -47,7 +47,8 @@ typedef struct {
 } zs_summary_t;
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
-   model "exact", backend "table": same coefficients). out must not be NULL. */
+   model "exact", backend "table": same coefficients). out must not be NULL.
+   Ends of contact with tables in this build: ZS_DELTA; any other returns ZS_EDOM. */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
 /* Exact history at n times tau[i] (finite, >= 0): compression delta, relative velocity

@@ -83,7 +83,9 @@ def build_header() -> str:
     text = _rt.HEADER
     for key, val in (("LAM_MIN", _tables.num(ns["LAM_PIECES"][0])),
                      ("LAM_MAX", _tables.num(ns["LAM_PIECES"][-1])),
-                     ("LAM_CRIT", str(_ham.lam_crit()))):
+                     ("LAM_CRIT", str(_ham.lam_crit())),
+                     ("ENDS", ", ".join(m for _, m, _ in EXACT_TABLES)
+                      + "; any other returns ZS_EDOM")):
         text = text.replace(f"@{key}@", val)
     return _c_header("zener_sym.h: C99 API of zener-sym (exact tables and HAM kernels).") + text
 

@@ -44,7 +44,8 @@ typedef struct {
 } zs_summary_t;
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
-   model "exact", backend "table": same coefficients). out must not be NULL. */
+   model "exact", backend "table": same coefficients). out must not be NULL.
+   Ends of contact with tables in this build: @ENDS@. */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
 /* Exact history at n times tau[i] (finite, >= 0): compression delta, relative velocity

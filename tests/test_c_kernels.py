@@ -4,10 +4,13 @@ The C library is compiled here with the strict flags of the issue (C99, -Wall -W
 -pedantic; and as C++), once as a shared library called through ctypes, once with
 -fsanitize=address,undefined into a driver that runs every entry point. References:
 
-* exact summaries and histories: the Python table evaluator (``zener_sym.exact.table``, the
-  exact model's table backend): same coefficients, so within 1e-14 relative (histories: 1e-14 of
-  the value, with a floor of 1e-14 of the field's scale where the value is far below it);
-* the inverse: lambda from a bracketing root finder (scipy brentq) on the Python e(lambda);
+* exact summaries and histories: the exact model's table backend through the public api
+  (``zs.summary``/``zs.history``, ``backend="table"``): same coefficients, so within 1e-14
+  relative (histories: 1e-14 of the value, with a floor of 1e-14 of the field's scale where the
+  value is far below it), at every lambda-piece edge, random lambda in [0, 1000], and the ends
+  of every time piece with their neighbouring doubles;
+* the inverse: lambda from a bracketing root finder (scipy brentq) on the Python e(lambda) or
+  xi(lambda), and ``zs.lam_for`` where the tree has it;
 * ham0/ham1: the generated numpy kernels (quadrature) and the models' numpy histories, 1e-12.
 
 A missing compiler skips with that reason.

@@ -42,7 +42,13 @@ def _python():
     table backend through the public api; ``table`` the generated table module, read as data
     (piece ends, layout constants)."""
     from zener_sym import api
-    from zener_sym.generated import exact_table, ham0_numpy, ham1_numpy
+    from zener_sym.generated import exact_table
+
+    try:  # the numpy HAM kernels: a runtime around formula-only generated files (newer tree)
+        from zener_sym.ham.runtime_numpy import ham0 as ham0_numpy
+        from zener_sym.ham.runtime_numpy import ham1 as ham1_numpy
+    except ImportError:  # the generated modules themselves (this tree)
+        from zener_sym.generated import ham0_numpy, ham1_numpy
 
     try:  # the Gauss-Jacobi rule of the first-order integrals (moving to zener_sym.numerics)
         from zener_sym.numerics import sqrt_integrals as quadrature

@@ -17,7 +17,7 @@ import argparse
 import numpy as np
 
 import zener_sym as zs
-from zener_sym.generated import ham1_numpy as h1
+from zener_sym.ham.runtime_numpy import ham1 as h1
 from zener_sym.generated import ham1_table
 from zener_sym.ham import spectral
 

@@ -16,7 +16,7 @@ def reg():
 
 @pytest.mark.slow
 def test_delta_ham1_two_derivations_agree(reg):
-    from zener_sym.generated import ham1_mpmath as m1
+    from zener_sym.ham.runtime_mpmath import ham1 as m1
 
     Y = reg.symbols
     f = sp.lambdify((Y["tau"], Y["lam"], Y["beta"], Y["omega0"]), reg.expr["delta_ham1"],

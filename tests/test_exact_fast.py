@@ -8,8 +8,10 @@ import numpy as np
 import pytest
 
 import zener_sym as zs
+from zener_sym.codegen import inputs_hash
 from zener_sym.exact import solver as exact, table as exact_fast
 from zener_sym.exact import table_build as build
+from zener_sym.exact import table_layout
 from zener_sym.generated import exact_table
 
 FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2")
@@ -133,14 +135,14 @@ def test_integrator_options_force_integration():
 
 def test_table_is_fresh_hash():
     """The committed table was built from the current builder and solver sources."""
-    assert exact_table.INPUTS_HASH == build.inputs_hash(), (
+    assert exact_table.INPUTS_HASH == inputs_hash(build.input_files()), (
         "generated/exact_table.py is stale: run `zener-sym exact-table` and commit it")
 
 
 def test_compare_detects_a_changed_coefficient():
     stored = {"summary": exact_table.SUMMARY, "history": exact_table.HISTORY}
     fresh = {"summary": {k: [np.asarray(c, float) for c in v] for k, v in stored["summary"].items()},
-             "history": {k: [tuple(build.parse_array(c) for c in subs) for subs in v]
+             "history": {k: [tuple(table_layout.parse_array(c) for c in subs) for subs in v]
                          for k, v in stored["history"].items()}}
     assert build.compare(stored, fresh) == []
     fresh["summary"]["log_e"][2] = fresh["summary"]["log_e"][2].copy()
@@ -213,7 +215,7 @@ def _chebyshev_history(lam, tau):
     # tau_w0 from the summary table's own field, as the fast path forms it
     v, _, _ = exact_fast._core(np.array([lam]))
     tau_w0 = v["tau_w0"][0]
-    tau_s = float(build.split_time(lam, log, tau_dc, tau_w0))
+    tau_s = float(build.LAYOUT.split_time(lam, log, tau_dc, tau_w0))
     if tau <= tau_dc:
         piece, y = "C", np.sqrt(tau / tau_dc)
     elif tau < tau_s:
@@ -223,12 +225,12 @@ def _chebyshev_history(lam, tau):
     else:
         piece, y = "B", np.sqrt((tau_d - tau) / (tau_d - tau_w0))
     if piece in "AM":
-        y = build.lin_log(tau, *(float(q) for q in build.map_params(
+        y = table_layout.lin_log(tau, *(float(q) for q in build.LAYOUT.map_params(
             piece, lam, log, tau_dc, tau_s, tau_w0)))
     k = build.N_SUB[piece]
     j = min(int(y * k), k - 1)
     xt = 2 * (y * k - j) - 1
-    f, imp = (chebval2d(xt, xl, build.parse_array(exact_table.HISTORY[(piece, key)][p][j]))
+    f, imp = (chebval2d(xt, xl, table_layout.parse_array(exact_table.HISTORY[(piece, key)][p][j]))
               for key in ("f", "I"))
     pre = {"C": tau, "A": 1.0, "M": 1.0, "B": tau_d - tau}[piece]
     return pre * np.exp(f), imp

@@ -7,7 +7,7 @@ from scipy.integrate import quad
 
 import zener_sym as zs
 from zener_sym.models import formulas as fm
-from zener_sym.generated import ham0_numpy as h0
+from zener_sym.ham.runtime_numpy import ham0 as h0
 
 LAMS = np.array([0.0, 0.11, 0.5, 1.01, 1.51, 1.99, 2.3, 2.44])
 

@@ -4,10 +4,10 @@ import mpmath
 import numpy as np
 import pytest
 
-from zener_sym.generated import ham0_mpmath as m0
-from zener_sym.generated import ham0_numpy as h0
-from zener_sym.generated import ham1_mpmath as m1
-from zener_sym.generated import ham1_numpy as h1
+from zener_sym.ham.runtime_mpmath import ham0 as m0
+from zener_sym.ham.runtime_numpy import ham0 as h0
+from zener_sym.ham.runtime_mpmath import ham1 as m1
+from zener_sym.ham.runtime_numpy import ham1 as h1
 
 LAMS = [0.0, 0.11, 1.01, 1.99, 2.3, 2.4399]
 

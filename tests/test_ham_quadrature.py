@@ -4,7 +4,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from zener_sym.ham.quadrature import sqrt_integrals
+from zener_sym.numerics.sqrt_integrals import sqrt_integrals
 
 G = {"cc": lambda t: mpmath.cos(t) ** 2, "sc": lambda t: mpmath.sin(t) * mpmath.cos(t),
      "ss": lambda t: mpmath.sin(t) ** 2, "s": mpmath.sin}
@@ -31,13 +31,13 @@ def test_against_mpmath_quad(a):
 
 def test_closed_form_matches_quadrature_at_30_digits():
     """The J_m 2F1 closed form of the mpmath kernels, checked against mpmath.quad (30 digits)."""
-    from zener_sym.generated import ham1_mpmath as m1
+    from zener_sym.ham.runtime_mpmath import sqrt_integrals_mp
 
     with mpmath.workdps(30):
         for a in ("0", "0.4", "7"):
             for th in ("1e-8", "0.001", "1.3", "3.1", "3.14159264"):
                 a_, th_ = mpmath.mpf(a), mpmath.mpf(th)
-                K = m1._K(("cc", "sc", "ss", "s"), a_, th_)
+                K = sqrt_integrals_mp(("cc", "sc", "ss", "s"), a_, th_)
                 for n, v in K.items():
                     with mpmath.workdps(50):  # the reference sums O(1) pieces to ~1e-20 near pi
                         ref = _quad(n, a_, th_)
@@ -73,7 +73,7 @@ def test_bad_input(a, th):
 def test_impulse_series_against_the_rule_on_lines_and_scattered():
     """K_s from the piecewise series (one rate per line, or scattered rates, some past the
     series' A_SERIES) against the Gauss-Jacobi rule, and bad input refused on either path."""
-    from zener_sym.ham.quadrature import A_SERIES, impulse_s, sqrt_integrals
+    from zener_sym.numerics.sqrt_integrals import A_SERIES, impulse_s, sqrt_integrals
 
     rates = np.array([0.0, 0.37, 2.9, 8.5, A_SERIES, 1.3 * A_SERIES])
     theta = np.linspace(0.0, 3.5, 157)  # past pi: K_s stays at K_s(a, pi)
@@ -94,7 +94,7 @@ def test_impulse_series_against_the_rule_on_lines_and_scattered():
 def test_ks_series_blocks_against_the_rule():
     """KsSeries.at, the block evaluator models call, at rates given per point in any order
     (past pi: K_s(a, pi)) against the Gauss-Jacobi rule; rates outside [0, A_SERIES] refused."""
-    from zener_sym.ham.quadrature import A_SERIES, KsSeries
+    from zener_sym.numerics.sqrt_integrals import A_SERIES, KsSeries
 
     u = np.array([0.0, 1.7, 6.0, A_SERIES])
     rng = np.random.default_rng(5)
@@ -111,7 +111,7 @@ def test_impulse_series_with_more_rates_than_one_group(monkeypatch):
     """Scattered rates (one per point) beyond the group size are contracted group by group:
     the same numbers as in one group up to the series' trimming (which depends on the rates at
     hand), and within the rule's tolerance."""
-    from zener_sym.ham import quadrature as q
+    from zener_sym.numerics import sqrt_integrals as q
 
     rng = np.random.default_rng(8)
     a = rng.uniform(0.0, q.A_SERIES, 300)

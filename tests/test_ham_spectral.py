@@ -7,8 +7,8 @@ import pytest
 
 import zener_sym as zs
 from zener_sym.ham import spectral as hs
-from zener_sym.generated import ham1_mpmath as m1
-from zener_sym.generated import ham1_numpy as h1
+from zener_sym.ham.runtime_mpmath import ham1 as m1
+from zener_sym.ham.runtime_numpy import ham1 as h1
 from zener_sym.models import FieldUnavailableError
 
 # spans both ways the contact ends: after pi/omega0 (most lambda) and before it (lambda >~ 2.3)

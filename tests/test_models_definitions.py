@@ -86,7 +86,7 @@ def test_pulse_impulse_against_quadrature_of_its_force(model):
 
 
 def test_reed_closed_form_integral():
-    from zener_sym.ham.quadrature import impulse_s
+    from zener_sym.numerics.sqrt_integrals import impulse_s
 
     x = np.array([0.0, 0.3, np.pi / 2, np.pi / 2 + 1e-4, 2.0, np.pi])
     with mpmath.workdps(30):
@@ -112,7 +112,7 @@ def test_fields_are_honoured(model):
 
 
 def test_ham0_series_impulse_matches_the_generated_kernel():
-    from zener_sym.generated import ham0_numpy as h0
+    from zener_sym.ham.runtime_numpy import ham0 as h0
 
     lam = np.linspace(0.0, 2.43, 40)[:, None]
     tau = np.linspace(0.0, 1.0, 50)[None, :] * h0.summary(lam)["tau_d"] * 1.1
@@ -122,7 +122,7 @@ def test_ham0_series_impulse_matches_the_generated_kernel():
 
 
 def test_line_blocks_cover_the_grid_once():
-    from zener_sym.blocks import line_blocks
+    from zener_sym.numerics.blocks import line_blocks
 
     for n_lines, n_col, size in ((7, 3, 8), (3, 20, 8), (1, 1, 8), (5, 8, 8)):
         hits = np.zeros((n_lines, n_col), dtype=int)
@@ -136,7 +136,7 @@ def test_line_blocks_cover_the_grid_once():
 def test_ham0_history_by_blocks_matches_the_generated_kernels(shape):
     """ham0's block-by-block history (lines longer than a block, one lambda per point, a small
     grid) against the generated delta0 and impulse (quadrature) at every point."""
-    from zener_sym.generated import ham0_numpy as h0
+    from zener_sym.ham.runtime_numpy import ham0 as h0
 
     rng = np.random.default_rng(6)
     if len(shape) == 2 and shape[0] == 1:

@@ -4,7 +4,7 @@ import pytest
 from scipy.integrate import quad
 
 import zener_sym as zs
-from zener_sym.generated import ham1_numpy as h1
+from zener_sym.ham.runtime_numpy import ham1 as h1
 
 
 def test_models_registered():

@@ -6,7 +6,7 @@ and numeric kernels generated from that derivation.
     >>> round(s.e, 6)
     0.180735
 """
-from .api import History, Summary, history, summary
+from .api import History, Summary, history, lam_for, summary
 from .models import REGISTRY, FieldUnavailableError
 from .scene.checks import ZenerWarning
 from .scene.grains import GrainImpact, grain_impact, viscoelastic_lambda
@@ -26,7 +26,7 @@ def __getattr__(name):
     raise AttributeError(f"module 'zener_sym' has no attribute {name!r}")
 
 
-__all__ = ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError",
+__all__ = ["summary", "history", "lam_for", "Summary", "History", "MODELS", "FieldUnavailableError",
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
            "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
            "compare", "Comparison", "__version__",

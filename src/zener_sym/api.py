@@ -4,9 +4,11 @@ from __future__ import annotations
 import numpy as np
 
 from . import params
+from .exact import inverse as _inverse
+from .exact.force_end import check_contact_end
 from .models import HISTORY_FIELDS, SUMMARY_FIELDS, get_model
 
-__all__ = ["Summary", "History", "summary", "history"]
+__all__ = ["Summary", "History", "summary", "history", "lam_for"]
 
 
 class _Fields:
@@ -246,6 +248,54 @@ def history(lam, tau, model: str = "exact", fields=None, **options) -> History:
     _no_silent_nan(values, m)
     skipped = tuple(f for f in m.history_fields if f not in want)
     return History(m, values, scalar=False, skipped=skipped)
+
+
+def lam_for(e=None, xi=None, tau_d=None, contact_end: str = "delta"):
+    """The lambda (Eq. 11) whose exact solution has a given restitution, energy loss or contact
+    duration: the inverse of :func:`summary`.
+
+    Give exactly one of ``e``, ``xi``, ``tau_d``. Solved on the exact model's Chebyshev tables
+    (0 <= lambda <= 1000) by a safeguarded Newton iteration whose derivative is the tables' own
+    (``zener_sym.exact.table.summary_derivative``), all values at once: ``summary(lam_for(e=x)).e``
+    is within 1e-12 relative of x (the tables' accuracy against the true solution is 1e-11).
+
+    Parameters
+    ----------
+    e : float or array_like, optional
+        Coefficient of restitution, e(1000) <= e <= 1 (e = 1 gives lambda = 0).
+    xi : float or array_like, optional
+        Energy-loss ratio xi = 1 - e^2 (Eq. 69), 0 <= xi <= xi(1000).
+    tau_d : float or array_like, optional
+        Dimensionless contact duration (Eq. 9), on the range of lambda where tau_d(lambda) is
+        monotone (``zener_sym.exact.inverse.tau_d_branch``; the whole table for the plate).
+    contact_end : {"delta", "force"}
+        The end of contact, as for :func:`summary`.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        lambda, a float for a scalar and an array of the input's shape otherwise.
+
+    Raises
+    ------
+    ValueError
+        None or several quantities given, a value that is not a real number, or a value the
+        tables do not reach on [0, 1000] (the message gives the reachable range).
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> lam = zs.lam_for(e=0.5)
+    >>> round(lam, 6), round(zs.summary(lam).e, 12)
+    (0.417662, 0.5)
+    >>> zs.lam_for(e=[1.0, 0.9]).round(6)
+    array([0.      , 0.061501])
+    """
+    end = check_contact_end(contact_end)
+    given = [v for v in (e, xi, tau_d) if v is not None]
+    scalar = len(given) == 1 and np.ndim(given[0]) == 0
+    lam = _inverse.lam_for(e=e, xi=xi, tau_d=tau_d, contact_end=end)
+    return float(lam) if scalar else lam
 
 
 def _history_fields(model, fields) -> tuple:

@@ -10,6 +10,7 @@ import importlib
 import sys
 import time
 
+from ..codegen import inputs_hash
 from ._checkout import CheckoutError, source_root
 
 
@@ -21,7 +22,8 @@ def run_table(builder, module: str, fields: tuple, command: str, what: str,
     ----------
     builder : module
         Has ``build_tables()``, ``table_path()``, ``compare(stored, fresh)``,
-        ``inputs_hash()``, ``render(tables)`` and ``CHECK_RTOL``.
+        ``input_files()`` (hashed by ``codegen.inputs_hash``), ``render(tables)`` and
+        ``CHECK_RTOL``.
     module : str
         The generated module holding the committed table.
     fields : tuple of str
@@ -52,8 +54,9 @@ def run_table(builder, module: str, fields: tuple, command: str, what: str,
         return 1
     stored = {key: getattr(mod, attr) for key, attr in fields}
     problems = builder.compare(stored, tables)
-    if mod.INPUTS_HASH != builder.inputs_hash():
-        problems.append(f"inputs hash {mod.INPUTS_HASH} != current {builder.inputs_hash()} "
+    digest = inputs_hash(builder.input_files())
+    if mod.INPUTS_HASH != digest:
+        problems.append(f"inputs hash {mod.INPUTS_HASH} != current {digest} "
                         f"({what} changed)")
     for p in problems:
         print(p)

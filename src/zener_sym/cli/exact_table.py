@@ -1,19 +1,37 @@
-"""``zener-sym exact-table [--check]``: build the fast exact model's tables, or verify them
-(:mod:`zener_sym.exact.table_build`; the shared body is :mod:`._tables`)."""
+"""``zener-sym exact-table [--check] [--contact-end {delta,force}]``: build the fast exact
+model's tables, or verify them: the plate's (:mod:`zener_sym.exact.table_build`) and the
+force-free end's (:mod:`zener_sym.exact.force_table_build`), both unless one end is named (the
+shared body is :mod:`._tables`)."""
 from __future__ import annotations
 
-from ..exact import table_build
+from ..exact import force_table_build, table_build
 from ._tables import run_table
 
+#: contact_end -> (builder, generated module, what its inputs hash covers)
+TABLES = {
+    "delta": (table_build, "zener_sym.generated.exact_table", "the builder or the solver"),
+    "force": (force_table_build, "zener_sym.generated.exact_force_table",
+              "the builder, the solvers or the plate table"),
+}
 
-def run(check: bool = False) -> int:
-    return run_table(table_build, "zener_sym.generated.exact_table",
-                     (("summary", "SUMMARY"), ("history", "HISTORY")), "exact-table",
-                     "the builder or the solver", check)
+
+def run(check: bool = False, contact_end: str | None = None) -> int:
+    ends = tuple(TABLES) if contact_end is None else (contact_end,)
+    code = 0
+    # the plate's first: the force-end table anchors its recovery map on the plate table
+    for end in ends:
+        builder, module, what = TABLES[end]
+        code = max(code, run_table(builder, module, (("summary", "SUMMARY"),
+                                                     ("history", "HISTORY")),
+                                   "exact-table", what, check))
+    return code
 
 
 def add_parser(sub) -> None:
-    p = sub.add_parser("exact-table", help="build the Chebyshev tables of the fast exact model")
+    p = sub.add_parser("exact-table", help="build the Chebyshev tables of the fast exact model "
+                                           "(plate end and force-free end)")
     p.add_argument("--check", action="store_true",
                    help="rebuild in memory and fail if the committed table differs numerically")
-    p.set_defaults(func=lambda args: run(check=args.check))
+    p.add_argument("--contact-end", choices=tuple(TABLES), default=None,
+                   help="only this end of contact's table (default: both)")
+    p.set_defaults(func=lambda args: run(check=args.check, contact_end=args.contact_end))

@@ -1,11 +1,19 @@
-"""Builders of the HAM kernels in generated/: numpy and mpmath, orders 0 and 1.
+"""Builders of the HAM formula files in generated/: numpy and mpmath, orders 0 and 1.
 
-Every formula in the emitted files is printed by SymPy's code printers from the expressions of
-``ham_exprs.ham_expressions()`` (with common subexpressions shared through ``sympy.cse``); the
-surrounding templates here only hold signatures, input checks and calls into the hand-written
-numerics (``zener_sym.ham.quadrature`` for the square-root integrals, ``zener_sym.ham.chebyshev`` for
-root finding and contact integrals). Output is deterministic: cse uses numbered symbols and its
-canonical order, and nothing is printed from an unordered container.
+A generated file holds printed formulas and data only: each function is one list of named
+outputs, printed by SymPy's code printers from the expressions of ``ham_exprs.ham_expressions()``
+(common subexpressions shared through ``sympy.cse``), with the arguments the expressions need and
+no check, loop or branch. One small template per file kind: the header, the imports the printed
+code calls (``numerics.elementary.p3`` and ``half_wave_sin`` for numpy, ``numerics.mp.p3_mp`` for
+mpmath), the data, the functions. The zeroth-order file of a backend holds what both orders
+share (k, beta, omega0, delta0, and for mpmath the 2F1 closed forms J), so no formula is printed
+twice in one backend.
+
+The hand-written runtime that wraps the formulas (input checks, broadcasting, the square-root
+integrals, root finding, contact integrals, mpmath precision and guard digits) is plain code in
+``zener_sym.ham.runtime_numpy`` and ``zener_sym.ham.runtime_mpmath``: a change there needs no
+regeneration. Output is deterministic: cse uses numbered symbols and its canonical order, and
+nothing is printed from an unordered container.
 """
 from __future__ import annotations
 
@@ -33,10 +41,11 @@ class _NumpyPrinter(NumPyPrinter):
 
 class _HalfWavePrinter(_NumpyPrinter):
     """For delta0 on its contact only: its one sine, of the phase omega0 tau, is printed as the
-    first half wave (``ham.chebyshev.half_wave_sin``: sin on [0, pi], 0 beyond; vectorized)."""
+    first half wave (``numerics.elementary.half_wave_sin``: sin on [0, pi], 0 beyond;
+    vectorized)."""
 
     def _print_sin(self, e):
-        return f"_hn.half_wave_sin({self._print(e.args[0])})"
+        return f"_half_wave_sin({self._print(e.args[0])})"
 
 
 class _MpPrinter(MpmathPrinter):
@@ -62,6 +71,21 @@ def _block(printer, outputs, indent="    ", prefix="_x"):
     return "\n".join(lines)
 
 
+def _function(printer, name, args, doc, outputs, returns=None, prefix="_x"):
+    """One printed formula function: ``def name(args)``, the docstring, the cse block of
+    ``outputs`` [(name, expr)], and ``return returns`` (default: the outputs, a tuple when
+    several). Every free symbol of an output must be an argument or an earlier output."""
+    have = {str(a) for a in args}
+    for out, ex in outputs:  # an output may use the arguments and the outputs before it
+        extra = sorted(str(s) for s in ex.free_symbols if str(s) not in have)
+        if extra:
+            raise ValueError(f"{name}: output {out} needs {extra} beyond the arguments {args}")
+        have.add(out)
+    ret = returns or ", ".join(n for n, _ in outputs)
+    return (f"\n\ndef {name}({', '.join(map(str, args))}):\n    \"\"\"{doc}\"\"\"\n"
+            f"{_block(printer, outputs, prefix=prefix)}\n    return {ret}\n")
+
+
 def _common():
     e = ham_expressions()
     lam_crit = sp.Float(e["lam_crit"], 40)
@@ -83,581 +107,114 @@ def _summary0_outputs(e):
             ("int_F2", e["int_F2_0"]), ("a_imp", e["a_impulse0"])]
 
 
-# ------------------------------------------------------------------------------------- numpy
-_NP_PRELUDE = '''
-import numpy
-
-from zener_sym.ham import chebyshev as _hn
-from zener_sym.ham.quadrature import sqrt_integrals
-
-_p3 = _hn.p3
-
-#: Critical lambda: omega0 = 0 there (Eq. 81); the HAM solution needs 0 <= lambda < LAM_CRIT.
-LAM_CRIT = {lam_crit_float}
-#: LAM_CRIT to 40 significant digits (root of {lam_crit_eq} = 0)
-LAM_CRIT_DIGITS = "{lam_crit_str}"
+_CONTACT = ("tau", "lam", "beta", "omega0")  # arguments of a formula on the contact
+_WITH_K = _CONTACT + ("Kcc", "Ksc", "Kss")  # ... and of one with the square-root integrals
+_SUMMARY0_RETURN = ("dict(tau_d=tau_d, tau_dc=tau_dc, tau_dr=tau_dr, eta=eta, e=e, delta_m=delta_m,"
+                    "\n                int_F2=int_F2, a_imp=a_imp)")
 
 
-def _lam(lam):
-    lam = numpy.asarray(lam, dtype=float)
-    if not numpy.all(numpy.isfinite(lam)):
-        raise ValueError("lambda must be finite; allowed: 0 <= lambda < LAM_CRIT = " + LAM_CRIT_DIGITS)
-    if numpy.any(lam < 0) or numpy.any(lam >= LAM_CRIT):
-        bad = lam[(lam < 0) | (lam >= LAM_CRIT)].ravel()[0]
-        raise ValueError(f"lambda = {{bad!r}} is outside the HAM solution's range: allowed "
-                         f"0 <= lambda < LAM_CRIT = {{LAM_CRIT_DIGITS}} (omega0 is not real beyond)")
-    return lam
+def _lam_crit_data(e, lam_crit, with_float):
+    eq = str(e["lam_crit_eq"])
+    lines = []
+    if with_float:
+        lines += ["#: Critical lambda: omega0 = 0 there (Eq. 81); the HAM solution needs "
+                  "0 <= lambda < LAM_CRIT.", f"LAM_CRIT = {float(lam_crit)!r}"]
+    lines += [f"#: LAM_CRIT to 40 significant digits (root of {eq} = 0)",
+              f'LAM_CRIT_DIGITS = "{lam_crit}"']
+    return "\n".join(lines) + "\n"
 
 
-def _inputs_narrow(tau, lam):
-    """Validated tau and lambda; lambda keeps its own shape (its parameters are then computed
-    once per lambda, not once per point) and tau takes the common shape, so every term that has
-    tau in it does too."""
-    lam = _lam(lam)
-    tau = numpy.asarray(tau, dtype=float)
-    if not numpy.all(numpy.isfinite(tau)) or numpy.any(tau < 0):
-        raise ValueError("tau must be finite and >= 0")
-    return numpy.broadcast_to(tau, numpy.broadcast_shapes(tau.shape, lam.shape)), lam
+def _zeroth(p, e, half_wave=None):
+    """The formulas both orders share: k, beta, omega0 (25, 32, 33), delta0 (35), delta0' (56),
+    and the zeroth-order closed forms (47, 54-61, 79)."""
+    text = _function(p, "params", ("lam",), "k (25), beta (32) and omega0 (33) of the "
+                     "zeroth-order operator.", _params_outputs(e))
+    text += _function(p, "delta0", _CONTACT, "Zeroth-order compression delta0 (35), continued "
+                      "analytically (no clipping).", [("out", e["delta0"])], "out")
+    text += _function(p, "delta0_dot", _CONTACT, "Zeroth-order relative velocity delta0' (56).",
+                      [("out", e["delta0_dot"])], "out")
+    if half_wave is not None:
+        text += _function(half_wave, "delta_contact", _CONTACT, "delta0 (35) on the "
+                          "zeroth-order contact, its sine printed as the first half wave (0 "
+                          "after omega0 tau = pi, Eq. 54).", [("out", e["delta0"])], "out")
+    text += _function(p, "a_impulse", ("beta", "omega0"), "Decay rate a = 3 beta / (2 omega0) "
+                      "of K_s in the impulse (47).", [("a_imp", e["a_impulse0"])])
+    text += _function(p, "impulse", ("omega0", "Ks"), "Impulse (47) omega0^(-5/2) K_s from "
+                      "K_s(a_impulse, omega0 tau).", [("out", e["impulse0"])], "out")
+    text += _function(p, "summary", ("beta", "omega0"), "Zeroth-order closed forms: tau_d (54), "
+                      "tau_dc (58), tau_dr (60), eta (61), e (79), delta_m = delta0(tau_dc), "
+                      "int_F2, and the impulse's rate a_imp.", _summary0_outputs(e),
+                      _SUMMARY0_RETURN)
+    return text
 
 
-def _inputs(tau, lam):
-    """Validated tau and lambda, both of the common shape."""
-    return numpy.broadcast_arrays(*_inputs_narrow(tau, lam))
+def _first(p, e, numpy):
+    """The first-order formulas: delta1 (37-42), delta0 + delta1 and its derivative, with the
+    square-root integrals K_cc, K_sc, K_ss (36) as arguments; numpy also the scaled forms the
+    root finding uses."""
+    d = e["delta0"] + e["delta1"]
+    dd = e["delta0_dot"] + e["delta1_dot"]
+    text = _function(p, "a_first", ("beta", "omega0"), "Decay rate a = beta / (2 omega0) of the "
+                     "square-root integrals K (36).", [("a", e["a_first"])])
+    text += _function(p, "delta1", _WITH_K, "First-order correction delta1 (37)-(42).",
+                      [("out", e["delta1"])], "out")
+    text += _function(p, "delta", _WITH_K, "First-order HAM compression delta0 + delta1 (42).",
+                      [("out", d)], "out")
+    text += _function(p, "delta_dot", _WITH_K, "d/dtau of delta0 + delta1 (the C' terms cancel "
+                      "by Eq. 38).", [("out", dd)], "out")
+    if numpy:
+        text += _function(p, "delta_scaled", _WITH_K, "exp(beta tau) * (delta0 + delta1): same "
+                          "sign, no underflow.", [("out", _scaled(d))], "out")
+        text += _function(p, "delta_dot_scaled", _WITH_K, "exp(beta tau) * d/dtau (delta0 + "
+                          "delta1): same sign, no underflow.", [("out", _scaled(dd))], "out")
+    return text
 
 
-def params(lam):
-    """k (25), beta (32) and omega0 (33) of the zeroth-order operator, as float arrays."""
-    lam = _lam(lam)
-{params_block}
-    return k, beta, omega0
-
-
-def delta0(tau, lam):
-    """Zeroth-order compression delta0 (35), continued analytically (no clipping)."""
-    tau, lam = _inputs_narrow(tau, lam)
-    k, beta, omega0 = params(lam)
-{delta0_block}
-    return out
-
-
-def delta0_dot(tau, lam):
-    """Zeroth-order relative velocity delta0' (56), continued analytically."""
-    tau, lam = _inputs_narrow(tau, lam)
-    k, beta, omega0 = params(lam)
-{delta0_dot_block}
-    return out
-'''
-
-_NP_HAM0 = '''
-
-def delta(tau, lam):
-    """delta0 (35) on the zeroth-order contact 0 <= tau <= pi/omega0 (analytic continuation beyond)."""
-    return delta0(tau, lam)
-
-
-def delta_dot(tau, lam):
-    """delta0' (56)."""
-    return delta0_dot(tau, lam)
-
-
-def force(tau, lam):
-    """Contact force F = delta0^(3/2) (45) during the zeroth-order contact, 0 after pi/omega0."""
-    tau, lam = _inputs(tau, lam)
-    k, beta, omega0 = params(lam)
-    d = delta0(tau, lam)
-    return numpy.where(omega0 * tau <= numpy.pi, numpy.maximum(d, 0.0), 0.0) ** 1.5
-
-
-def delta_contact(tau, lam):
-    """delta0 (35) on the zeroth-order contact 0 <= omega0 tau <= pi, 0 after (Eq. 54): the sine
-    is its first half wave (zener_sym.ham.chebyshev.half_wave_sin, vectorized, within 3 ulp)."""
-    tau, lam = _inputs_narrow(tau, lam)
-    k, beta, omega0 = params(lam)
-{delta_contact_block}
-    return out
-
-
-def impulse(tau, lam):
-    """Impulse (47) int_0^tau F dtau = omega0^(-5/2) K_s(3 beta / (2 omega0), omega0 tau), frozen
-    after pi/omega0; K_s by Gauss-Jacobi quadrature (zener_sym.ham.quadrature)."""
-    tau, lam = _inputs(tau, lam)
-    k, beta, omega0 = params(lam)
-{a_imp_block}
-    Ks = sqrt_integrals(a_imp, omega0 * tau, ("s",))["s"]
-{impulse_block}
-    return out
-
-
-def summary(lam):
-    """Zeroth-order closed forms: k, beta, omega0, tau_d (54), tau_dc (58), tau_dr (60), eta (61),
-    e (79), delta_m = delta0(tau_dc), F_m, impulse (47) at tau_d, int_F2 (integral of F^2)."""
-    k, beta, omega0 = params(lam)
-{summary_block}
-    Ks = sqrt_integrals(a_imp, numpy.pi, ("s",))["s"]
-{impulse_block}
-    return dict(k=k, beta=beta, omega0=omega0, tau_d=tau_d, tau_dc=tau_dc, tau_dr=tau_dr, eta=eta,
-                e=e, delta_m=delta_m, F_m=delta_m ** 1.5, impulse=out, int_F2=int_F2)
-'''
-
-_NP_HAM1 = '''
-
-def _K(beta, omega0, tau):
-    """Square-root integrals K_cc, K_sc, K_ss at a = beta / (2 omega0), theta = omega0 tau, by
-    Gauss-Jacobi quadrature (zener_sym.ham.quadrature: why not scipy hyp2f1 is explained there); frozen at
-    theta = pi (delta0 < 0 beyond: its contact force and sqrt(delta0) are zero)."""
-{a_block}
-    K = sqrt_integrals(a, omega0 * tau, ("cc", "sc", "ss"))
-    return K["cc"], K["sc"], K["ss"]
-
-
-def delta1(tau, lam):
-    """First-order correction delta1 (37)-(42): variation of constants, C(tau) - C(0)."""
-    tau, lam = _inputs(tau, lam)
-    k, beta, omega0 = params(lam)
-    Kcc, Ksc, Kss = _K(beta, omega0, tau)
-{delta1_block}
-    return out
-
-
-def delta(tau, lam):
-    """First-order HAM compression delta0 + delta1 (42), with the continuation past pi/omega0."""
-    tau, lam = _inputs(tau, lam)
-    k, beta, omega0 = params(lam)
-    return delta_from_K(tau, lam, *_K(beta, omega0, tau))
-
-
-def delta_dot(tau, lam):
-    """d/dtau of delta0 + delta1 (the C' terms cancel by Eq. 38)."""
-    tau, lam = _inputs(tau, lam)
-    k, beta, omega0 = params(lam)
-    return delta_dot_from_K(tau, lam, *_K(beta, omega0, tau))
-
-
-def delta_from_K(tau, lam, Kcc, Ksc, Kss):
-    """delta0 + delta1 (42) for given square-root integrals K_cc, K_sc, K_ss at omega0 tau.
-
-    The inputs are not checked: ``delta`` passes its quadrature values, and
-    ``zener_sym.ham.spectral`` its Chebyshev-series values, both on validated arrays."""
-    k, beta, omega0 = params(lam)
-{delta_block}
-    return out
-
-
-def delta_dot_from_K(tau, lam, Kcc, Ksc, Kss):
-    """d/dtau of delta0 + delta1 for given K_cc, K_sc, K_ss (inputs not checked, as above)."""
-    k, beta, omega0 = params(lam)
-{delta_dot_block}
-    return out
-
-
-def delta_scaled(tau, lam):
-    """exp(beta tau) * delta: same sign as delta, no underflow (used for root finding)."""
-    tau, lam = _inputs(tau, lam)
-    k, beta, omega0 = params(lam)
-    Kcc, Ksc, Kss = _K(beta, omega0, tau)
-{delta_scaled_block}
-    return out
-
-
-def delta_dot_scaled(tau, lam):
-    """exp(beta tau) * delta' (same sign, no underflow)."""
-    tau, lam = _inputs(tau, lam)
-    k, beta, omega0 = params(lam)
-    Kcc, Ksc, Kss = _K(beta, omega0, tau)
-{delta_dot_scaled_block}
-    return out
-
-
-def force(tau, lam):
-    """max(delta, 0)^(3/2) pointwise (45); meaningful up to the end of contact (contact_end)."""
-    return numpy.maximum(delta(tau, lam), 0.0) ** 1.5
-
-
-def compression_end(lam):
-    """tau_dc: first zero of delta' (root finding, vectorised over lambda)."""
-    lam = numpy.atleast_1d(_lam(lam)).astype(float).ravel()
-    k, beta, omega0 = params(lam)
-    return _hn.first_root(delta_dot_scaled, lam, numpy.zeros_like(lam), numpy.pi / omega0,
-                          n_scan=64, what="end of compression (delta' = 0)")
-
-
-def contact_end(lam, tau_dc=None):
-    """tau_d: first zero of delta after the maximum, searched up to 3 pi/omega0."""
-    lam = numpy.atleast_1d(_lam(lam)).astype(float).ravel()
-    k, beta, omega0 = params(lam)
-    if tau_dc is None:
-        tau_dc = compression_end(lam)
-    return _hn.first_root(delta_scaled, lam, tau_dc, 3.0 * numpy.pi / omega0, n_scan=192,
-                          what="end of contact (delta = 0)")
-
-
-def _contact_integral(fun, tau, lam, tau_d):
-    """int_0^min(tau, tau_d) fun dtau, split at pi/omega0 (where the sqrt terms switch off); one
-    Chebyshev antiderivative per lambda serves every tau (zener_sym.ham.chebyshev)."""
-    k, beta, omega0 = params(lam)
-    end = numpy.minimum(tau, tau_d)
-    tpi = numpy.pi / omega0
-    first = _hn.cumulative_integral(fun, 0.0, numpy.minimum(tau_d, tpi), lam,
-                                    numpy.minimum(end, tpi))
-    second = _hn.cumulative_integral(fun, tpi, numpy.maximum(tau_d, tpi), lam,
-                                     numpy.maximum(end, tpi))
-    return first + second
-
-
-def _force2(tau, lam):
-    return numpy.maximum(delta(tau, lam), 0.0) ** 3
-
-
-def impulse(tau, lam, tau_d=None):
-    """Impulse (47): int_0^min(tau, tau_d) max(delta, 0)^(3/2) dtau, a smoothstep-mapped Chebyshev
-    antiderivative per lambda (zener_sym.ham.chebyshev.cumulative_integral); frozen after the end
-    of contact."""
-    tau, lam = _inputs(tau, lam)
-    if tau_d is None:
-        u, inv = numpy.unique(lam, return_inverse=True)
-        tau_d = contact_end(u)[inv].reshape(lam.shape)
-    return _contact_integral(force, tau, lam, tau_d)
-
-
-def summary(lam):
-    """First-order summary by root finding and quadrature on delta0 + delta1: tau_dc, delta_m, F_m,
-    tau_d, tau_dr, eta, e = -delta'(tau_d), impulse and int_F2 over the contact."""
-    lam = numpy.atleast_1d(_lam(lam)).astype(float).ravel()
-    k, beta, omega0 = params(lam)
-    tau_dc = compression_end(lam)
-    tau_d = contact_end(lam, tau_dc)
-    delta_m = delta(tau_dc, lam)
-    imp = _contact_integral(force, tau_d, lam, tau_d)
-    int_F2 = _contact_integral(_force2, tau_d, lam, tau_d)
-    return dict(k=k, beta=beta, omega0=omega0, tau_d=tau_d, tau_dc=tau_dc, tau_dr=tau_d - tau_dc,
-                eta=(tau_d - tau_dc) / tau_dc, e=-delta_dot(tau_d, lam), delta_m=delta_m,
-                F_m=delta_m ** 1.5, impulse=imp, int_F2=int_F2)
-'''
-
-
-def _np_prelude(e, lam_crit, desc, extra_sources=()):
-    p = _NumpyPrinter()
-    return header(_SOURCES + tuple(extra_sources), desc) + _NP_PRELUDE.format(
-        lam_crit_float=repr(float(lam_crit)), lam_crit_str=str(lam_crit),
-        lam_crit_eq=str(e["lam_crit_eq"]),
-        params_block=_block(p, _params_outputs(e)),
-        delta0_block=_block(p, [("out", e["delta0"])]),
-        delta0_dot_block=_block(p, [("out", e["delta0_dot"])]),
-    ), p
+_NP_IMPORTS = "import numpy\n\nfrom zener_sym.numerics.elementary import p3 as _p3\n"
 
 
 def build_ham0_numpy() -> str:
-    """generated/ham0_numpy.py: zeroth-order kernels and closed forms, float64 numpy."""
+    """generated/ham0_numpy.py: zeroth-order formulas, float64 numpy."""
     e, lam_crit = _common()
-    text, p = _np_prelude(e, lam_crit, "Zeroth-order HAM kernels of Zener's equation (10), numpy float64.")
     sines = e["delta0"].atoms(sp.sin)
     if len(sines) != 1 or next(iter(sines)).args[0] != Y["omega0"] * Y["tau"]:
         raise ValueError(f"delta_contact expects one sine of omega0*tau in delta0, got {sines}")
-    return text + _NP_HAM0.format(
-        delta_contact_block=_block(_HalfWavePrinter(), [("out", e["delta0"])]),
-        a_imp_block=_block(p, [("a_imp", e["a_impulse0"])]),
-        impulse_block=_block(p, [("out", e["impulse0"])]),
-        summary_block=_block(p, _summary0_outputs(e)),
-    )
+    return (header(_SOURCES, "Zeroth-order HAM formulas of Zener's equation (10), numpy float64 "
+                   "(the runtime: zener_sym.ham.runtime_numpy).")
+            + "\nimport numpy\n\nfrom zener_sym.numerics.elementary import half_wave_sin as "
+            "_half_wave_sin\n\n"
+            + _lam_crit_data(e, lam_crit, True)
+            + _zeroth(_NumpyPrinter(), e, _HalfWavePrinter()))
 
 
 def build_ham1_numpy() -> str:
-    """generated/ham1_numpy.py: first-order kernels (delta0 + delta1), float64 numpy."""
-    e, lam_crit = _common()
-    text, p = _np_prelude(e, lam_crit, "First-order HAM kernels of Zener's equation (10), numpy float64.")
-    d = e["delta0"] + e["delta1"]
-    dd = e["delta0_dot"] + e["delta1_dot"]
-    return text + _NP_HAM1.format(
-        a_block=_block(p, [("a", e["a_first"])]),
-        delta1_block=_block(p, [("out", e["delta1"])]),
-        delta_block=_block(p, [("out", d)]),
-        delta_dot_block=_block(p, [("out", dd)]),
-        delta_scaled_block=_block(p, [("out", _scaled(d))]),
-        delta_dot_scaled_block=_block(p, [("out", _scaled(dd))]),
-    )
-
-
-# ------------------------------------------------------------------------------------ mpmath
-_MP_PRELUDE = '''
-import mpmath
-
-from zener_sym.ham import mp as _hn
-
-_p3 = _hn.p3_mp
-
-#: Critical lambda (omega0 = 0), to 40 significant digits.
-LAM_CRIT_DIGITS = "{lam_crit_str}"
-
-
-def _prec(dps):
-    """Working digits: ``dps`` if given, else the caller's mpmath.mp.dps."""
-    return mpmath.mp.dps if dps is None else int(dps)
-
-
-def _out(x, p):
-    """x rounded to p digits (the precision the caller asked for)."""
-    with mpmath.workdps(p):
-        return +x
-
-
-def _lam(lam):
-    lam = mpmath.mpf(lam)
-    if not mpmath.isfinite(lam) or lam < 0 or lam >= mpmath.mpf(LAM_CRIT_DIGITS):
-        raise ValueError(f"lambda = {{lam}} is outside the HAM solution's range: allowed "
-                         f"0 <= lambda < LAM_CRIT = {{LAM_CRIT_DIGITS}} (omega0 is not real beyond)")
-    return lam
-
-
-def _tau(tau):
-    tau = mpmath.mpf(tau)
-    if not mpmath.isfinite(tau) or tau < 0:
-        raise ValueError("tau must be finite and >= 0")
-    return tau
-
-
-def params(lam, dps=None):
-    """k (25), beta (32), omega0 (33) at ``dps`` digits."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        lam = _lam(lam)
-{params_block}
-    return _out(k, p), _out(beta, p), _out(omega0, p)
-
-
-def _J(m, a, theta):
-    """J_m(a, theta) = int_0^theta exp((-a + i m) t) sqrt(sin t) dt by its 2F1 closed form
-    (theta in [0, pi]); the value at pi uses Gauss's theorem (Gamma functions)."""
-    if theta == 0:
-        return mpmath.mpc(0)
-    if theta >= mpmath.pi:
-{J_pi_block}
-        return out
-{J_theta_block}
-    return out
-
-
-def _K(names, a, theta):
-    """K_g(a, theta) from J_0, J_1, J_2 (cc, sc, ss, s), frozen at theta >= pi. Extra digits cover
-    the cancellations at small theta (F(theta) - F(0) ~ theta^(3/2), and K_ss ~ theta^(7/2) from
-    Re J_0 - Re J_2) and the 2F1 evaluation near z = 1 at theta -> pi."""
-    guard = 15
-    if 0 < theta < 1:
-        guard += int(-3.5 * mpmath.log10(theta)) + 1
-    if 0 < mpmath.pi - theta < 1:
-        guard += int(-1.5 * mpmath.log10(mpmath.pi - theta)) + 1
-    with mpmath.workdps(mpmath.mp.dps + guard):
-        theta = min(mpmath.mpf(theta), +mpmath.pi)
-        J = {{}}
-        out = {{}}
-        for n in names:
-            if n in ("cc", "ss") and 0 not in J:
-                J[0] = _J(0, a, theta)
-            if n in ("cc", "ss", "sc") and 2 not in J:
-                J[2] = _J(2, a, theta)
-            if n == "s" and 1 not in J:
-                J[1] = _J(1, a, theta)
-        for n in names:
-            out[n] = {{"cc": lambda: (J[0].real + J[2].real) / 2,
-                      "ss": lambda: (J[0].real - J[2].real) / 2,
-                      "sc": lambda: J[2].imag / 2,
-                      "s": lambda: J[1].imag}}[n]()
-    return out
-
-
-def delta0(tau, lam, dps=None):
-    """Zeroth-order delta0 (35), analytic continuation (no clipping)."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        tau, lam = _tau(tau), _lam(lam)
-{params_block_2}
-{delta0_block}
-    return _out(out, p)
-
-
-def delta0_dot(tau, lam, dps=None):
-    """delta0' (56)."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        tau, lam = _tau(tau), _lam(lam)
-{params_block_2}
-{delta0_dot_block}
-    return _out(out, p)
-'''
-
-_MP_HAM0 = '''
-
-def delta(tau, lam, dps=None):
-    """delta0 (35)."""
-    return delta0(tau, lam, dps)
-
-
-def delta_dot(tau, lam, dps=None):
-    """delta0' (56)."""
-    return delta0_dot(tau, lam, dps)
-
-
-def force(tau, lam, dps=None):
-    """delta0^(3/2) during 0 <= tau <= pi/omega0, else 0."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        k, beta, omega0 = params(lam, mpmath.mp.dps)
-        d = delta0(tau, lam, mpmath.mp.dps)
-        out = mpmath.mpf(0) if (omega0 * _tau(tau) > mpmath.pi or d <= 0) else d ** 1.5
-    return _out(out, p)
-
-
-def impulse(tau, lam, dps=None):
-    """Impulse (47) = omega0^(-5/2) K_s(3 beta/(2 omega0), omega0 tau) by the 2F1 closed form."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        tau, lam = _tau(tau), _lam(lam)
-{params_block_2}
-{a_imp_block}
-        Ks = _K(("s",), a_imp, omega0 * tau)["s"]
-{impulse_block}
-    return _out(out, p)
-
-
-def summary(lam, dps=None):
-    """Zeroth-order closed forms (see the numpy module), impulse by Gamma functions."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        lam = _lam(lam)
-{params_block_2}
-{summary_block}
-        Ks = _K(("s",), a_imp, mpmath.pi)["s"]
-{impulse_block}
-        res = dict(k=k, beta=beta, omega0=omega0, tau_d=tau_d, tau_dc=tau_dc, tau_dr=tau_dr,
-                   eta=eta, e=e, delta_m=delta_m, F_m=delta_m ** 1.5, impulse=out, int_F2=int_F2)
-    return {{n: _out(v, p) for n, v in res.items()}}
-'''
-
-_MP_HAM1 = '''
-
-def _Ks(beta, omega0, tau):
-{a_block}
-        K = _K(("cc", "sc", "ss"), a, omega0 * tau)
-        return K["cc"], K["sc"], K["ss"]
-
-
-def delta1(tau, lam, dps=None):
-    """First-order correction delta1 (37)-(42) with C(tau) - C(0) in closed form (2F1, Gamma)."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        tau, lam = _tau(tau), _lam(lam)
-{params_block_2}
-        Kcc, Ksc, Kss = _Ks(beta, omega0, tau)
-{delta1_block}
-    return _out(out, p)
-
-
-def delta(tau, lam, dps=None):
-    """delta0 + delta1 (42), continued past pi/omega0 with the sqrt integrals frozen."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        tau, lam = _tau(tau), _lam(lam)
-{params_block_2}
-        Kcc, Ksc, Kss = _Ks(beta, omega0, tau)
-{delta_block}
-    return _out(out, p)
-
-
-def delta_dot(tau, lam, dps=None):
-    """d/dtau (delta0 + delta1)."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 10):
-        tau, lam = _tau(tau), _lam(lam)
-{params_block_2}
-        Kcc, Ksc, Kss = _Ks(beta, omega0, tau)
-{delta_dot_block}
-    return _out(out, p)
-
-
-def force(tau, lam, dps=None):
-    """max(delta, 0)^(3/2), meaningful up to the end of contact."""
-    with mpmath.workdps(_prec(dps)):
-        d = delta(tau, lam, mpmath.mp.dps)
-        return d ** 1.5 if d > 0 else mpmath.mpf(0)
-
-
-def compression_end(lam, dps=None, guess=None):
-    """tau_dc: zero of delta' near ``guess`` (default: the numpy kernel's root)."""
-    if guess is None:
-        from zener_sym.generated import ham1_numpy
-        guess = float(ham1_numpy.compression_end(float(lam))[0])
-    p = _prec(dps)
-    with mpmath.workdps(p + 5):
-        f = lambda t: delta_dot(t, lam, mpmath.mp.dps)
-        h = 1e-7 * guess
-        root = mpmath.findroot(f, (guess - h, guess + h), solver="anderson")
-    return _out(root, p)
-
-
-def contact_end(lam, dps=None, guess=None):
-    """tau_d: zero of delta after the maximum near ``guess`` (default: the numpy kernel's root)."""
-    if guess is None:
-        from zener_sym.generated import ham1_numpy
-        guess = float(ham1_numpy.contact_end(float(lam))[0])
-    p = _prec(dps)
-    with mpmath.workdps(p + 5):
-        f = lambda t: delta(t, lam, mpmath.mp.dps)
-        h = 1e-7 * guess
-        root = mpmath.findroot(f, (guess - h, guess + h), solver="anderson")
-    return _out(root, p)
-
-
-def impulse(tau, lam, dps=None, tau_d=None):
-    """Impulse (47): int_0^min(tau, tau_d) F dtau, split at pi/omega0, mpmath.quad on the
-    smoothstep-mapped pieces (slow: many 2F1 evaluations)."""
-    p = _prec(dps)
-    with mpmath.workdps(p + 5):
-        tau, lam = _tau(tau), _lam(lam)
-        k, beta, omega0 = params(lam, mpmath.mp.dps)
-        if tau_d is None:
-            tau_d = contact_end(lam, mpmath.mp.dps)
-        end = min(tau, mpmath.mpf(tau_d))
-        tpi = mpmath.pi / omega0
-        f = lambda t: force(t, lam, mpmath.mp.dps)
-        out = _hn.contact_integral_mp(f, 0, min(end, tpi)) + _hn.contact_integral_mp(f, tpi, max(end, tpi))
-    return _out(out, p)
-'''
-
-
-def _mp_prelude(e, lam_crit, desc):
-    p = _MpPrinter()
-    J = e["J_theta"]
-    Jpi = e["J_pi"]
-    return header(_SOURCES, desc) + _MP_PRELUDE.format(
-        lam_crit_str=str(lam_crit),
-        params_block=_block(p, _params_outputs(e), indent="        "),
-        params_block_2=_block(p, _params_outputs(e), indent="        ", prefix="_p"),
-        J_pi_block=_block(p, [("out", Jpi)], indent="        "),
-        J_theta_block=_block(p, [("out", J)], indent="    "),
-        delta0_block=_block(p, [("out", e["delta0"])], indent="        "),
-        delta0_dot_block=_block(p, [("out", e["delta0_dot"])], indent="        "),
-    ), p
+    """generated/ham1_numpy.py: first-order formulas, float64 numpy."""
+    e, _ = _common()
+    return (header(_SOURCES, "First-order HAM formulas of Zener's equation (10), numpy float64 "
+                   "(the runtime: zener_sym.ham.runtime_numpy).")
+            + "\n" + _NP_IMPORTS + _first(_NumpyPrinter(), e, numpy=True))
 
 
 def build_ham0_mpmath() -> str:
-    """generated/ham0_mpmath.py: zeroth-order kernels at any precision (2F1, Gamma)."""
+    """generated/ham0_mpmath.py: zeroth-order formulas and the 2F1 closed forms J, mpmath."""
     e, lam_crit = _common()
-    text, p = _mp_prelude(e, lam_crit, "Zeroth-order HAM kernels of Zener's equation (10), mpmath.")
-    return text + _MP_HAM0.format(
-        params_block_2=_block(p, _params_outputs(e), indent="        ", prefix="_p"),
-        a_imp_block=_block(p, [("a_imp", e["a_impulse0"])], indent="        "),
-        impulse_block=_block(p, [("out", e["impulse0"])], indent="        "),
-        summary_block=_block(p, _summary0_outputs(e), indent="        "),
-    )
+    p = _MpPrinter()
+    text = _zeroth(p, e)
+    text += _function(p, "J_pi", ("m", "a"), "J_m(a, pi) by Gauss's theorem (Gamma functions).",
+                      [("out", e["J_pi"])], "out")
+    text += _function(p, "J_theta", ("m", "a", "theta"), "J_m(a, theta) = int_0^theta "
+                      "exp((-a + i m) t) sqrt(sin t) dt by its 2F1 closed form, 0 < theta < pi.",
+                      [("out", e["J_theta"])], "out")
+    return (header(_SOURCES, "Zeroth-order HAM formulas of Zener's equation (10), mpmath (the "
+                   "runtime: zener_sym.ham.runtime_mpmath).")
+            + "\nimport mpmath\n\n"
+            + _lam_crit_data(e, lam_crit, False) + text)
 
 
 def build_ham1_mpmath() -> str:
-    """generated/ham1_mpmath.py: first-order kernels at any precision (2F1, Gamma)."""
-    e, lam_crit = _common()
-    text, p = _mp_prelude(e, lam_crit, "First-order HAM kernels of Zener's equation (10), mpmath.")
-    return text + _MP_HAM1.format(
-        a_block=_block(p, [("a", e["a_first"])], indent="        "),
-        params_block_2=_block(p, _params_outputs(e), indent="        ", prefix="_p"),
-        delta1_block=_block(p, [("out", e["delta1"])], indent="        "),
-        delta_block=_block(p, [("out", e["delta0"] + e["delta1"])], indent="        "),
-        delta_dot_block=_block(p, [("out", e["delta0_dot"] + e["delta1_dot"])], indent="        "),
-    )
+    """generated/ham1_mpmath.py: first-order formulas, mpmath."""
+    e, _ = _common()
+    return (header(_SOURCES, "First-order HAM formulas of Zener's equation (10), mpmath (the "
+                   "runtime: zener_sym.ham.runtime_mpmath).")
+            + "\nimport mpmath\n\nfrom zener_sym.numerics.mp import p3_mp as _p3\n"
+            + _first(_MpPrinter(), e, numpy=False))

@@ -19,7 +19,7 @@ here against a cheap independent local route before use (the registry's own chec
   near tau = 0; that form is proposed and verified symbolically (it solves (30) with f_elem and
   the zero initial data (31), hence is the convolution). The square-root part is expressed through the integrals
   K_g(a, theta) = int_0^theta exp(-a t) g(t) sqrt(sin t) dt, g in {cos^2, sin cos, sin^2},
-  a = beta/(2 omega0): numpy evaluates them by Gauss-Jacobi quadrature (``zener_sym.ham.quadrature``),
+  a = beta/(2 omega0): numpy evaluates them by Gauss-Jacobi quadrature (``zener_sym.numerics.sqrt_integrals``),
   mpmath by the closed form below.
 * the closed form of J_m(a, theta) = int_0^theta exp((-a + i m) t) sqrt(sin t) dt: with
   z = exp(2 i t), sqrt(sin t) = exp(i (pi/4 - t/2)) (1 - z)^{1/2} / sqrt(2) (principal branch, arg of

@@ -2,8 +2,8 @@
 
 The tables (``generated/exact_table.py``, built offline by :mod:`zener_sym.exact.table_build` from
 the scipy solver at rtol 1e-13) cover ``LAM_MIN <= lambda <= LAM_MAX`` (0 to 1000) for the
-summary and the history (above ``table_build.LOG_FROM`` = 5 in the variable ln lambda, from the
-universal large-lambda orbit; ``HISTORY_LAM_MAX`` = ``LAM_MAX``). They are never extrapolated:
+summary and the history (above ``LOG_FROM`` = 5 in the variable ln lambda, from the universal
+large-lambda orbit; ``HISTORY_LAM_MAX`` = ``LAM_MAX``). They are never extrapolated:
 :func:`in_range` and :func:`history_in_range` tell the caller which lambda must be integrated.
 
 Documented error bounds: ``SUMMARY_RTOL`` relative on every summary field, ``HISTORY_ATOL`` on
@@ -24,18 +24,18 @@ import importlib
 
 import numpy as np
 
-from ..blocks import BLOCK, field_buffers
-from ..ham.chebyshev import horner_take_pair
+from ..numerics.blocks import BLOCK, field_buffers
+from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
 from . import solver as _solver
-from . import table_build as _build
+from .table_layout import Layout, parse_array
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
-           "history_in_range", "summary", "history"]
+           "history_in_range", "summary", "summary_derivative", "DERIVATIVE_FIELDS", "history"]
 
-LAM_MIN = float(_build.LAM_PIECES[0])
-LAM_MAX = float(_build.LAM_PIECES[-1])
-#: The history tables end here (as the summary tables: LAM_MAX).
-HISTORY_LAM_MAX = float(_build.HISTORY_TO)
+#: LAM_MIN, LAM_MAX (the summary tables' range) and HISTORY_LAM_MAX (where the history tables
+#: end) are read from the generated table on first use (``__getattr__``): it is the one source of
+#: the layout.
+_RANGE = ("LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX")
 #: Documented (and tested) relative error bound of every summary field.
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
@@ -56,7 +56,7 @@ def _stack_summary(mats) -> np.ndarray:
 def _stack(pieces) -> np.ndarray:
     """One zero-padded array [lambda piece, sub-piece, time degree, lambda degree] (trimming
     varies)."""
-    mats = [[_build.parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float)
+    mats = [[parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float)
              for c in subs] for subs in pieces]
     flat = [c for subs in mats for c in subs]
     out = np.zeros((len(mats), max(len(subs) for subs in mats), max(c.shape[0] for c in flat),
@@ -79,30 +79,30 @@ def _pad_rows(rows) -> np.ndarray:
 def _tables():
     """The generated table, loaded on first use (importing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
-    if (tuple(t.LAM_PIECES) != tuple(_build.LAM_PIECES) or t.C_STRETCH != _build.C_STRETCH
-            or getattr(t, "LOG_FROM", None) != _build.LOG_FROM
-            or getattr(t, "HISTORY_TO", None) != _build.HISTORY_TO
-            or getattr(t, "C_END", None) != _build.C_END
-            or getattr(t, "N_SUB", None) != _build.N_SUB
-            or getattr(t, "S_ORBIT", None) != _build.S_ORBIT
-            or getattr(t, "S_TRANSIENT", None) != _build.S_TRANSIENT):
-        raise RuntimeError("generated/exact_table.py does not match zener_sym.exact.table_build (stale "
-                           "table): run `zener-sym exact-table`")
+    layout = Layout.of(t)
     edges = np.asarray(t.LAM_PIECES, dtype=float)
     log = edges[:-1] >= t.LOG_FROM
     # per piece: the Chebyshev variable's ends (lambda, or ln lambda on the large pieces)
     with np.errstate(divide="ignore"):
         ga = np.where(log, np.log(np.where(log, edges[:-1], 1.0)), edges[:-1])
         gb = np.where(log, np.log(edges[1:]), edges[1:])
-    return {"edges": edges, "log": log, "ga": ga, "gb": gb,
+    return {"layout": layout, "LAM_MIN": float(edges[0]), "LAM_MAX": float(edges[-1]),
+            "HISTORY_LAM_MAX": float(layout.HISTORY_TO), "edges": edges, "log": log, "ga": ga,
+            "gb": gb,
             "summary_keys": tuple(t.SUMMARY),
             # [lambda piece, field, degree], zero-padded: all fields in one pass
             "summary": _stack_summary([_pad_rows([v[p] for v in t.SUMMARY.values()])
                                for p in range(len(t.LAM_PIECES) - 1)]),
-            "history": _history_layout(t.HISTORY, log)}
+            "history": _history_layout(t.HISTORY, log, layout)}
 
 
-def _history_layout(history, log) -> dict:
+def __getattr__(name):
+    if name in _RANGE:
+        return _tables()[name]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def _history_layout(history, log, lay) -> dict:
     """The history coefficients arranged for ``history``: per time piece and lambda piece one
     array [time degree, lambda degree, 2 * sub-piece + field] (field 0: f, 1: I; zero-padded to
     the time piece's largest degree), so the lambda contraction gives per line the pairs
@@ -114,17 +114,13 @@ def _history_layout(history, log) -> dict:
     tests/test_exact_fast.py)."""
     n_lam = len(log)
     layout = {}
-    for piece in _build.TIME_PIECES:
-        st = {k: _stack(history[(piece, k)]) for k in _build.HISTORY_KEYS}  # [lp, sub, j, k]
+    for piece in lay.TIME_PIECES:
+        st = {k: _stack(history[(piece, k)]) for k in lay.HISTORY_KEYS}  # [lp, sub, j, k]
         deg = max(a.shape[2] for a in st.values())
-        n_sub = _build.N_SUB[piece]
-        conv = np.zeros((deg, deg))  # monomial = conv @ Chebyshev
-        for j in range(deg):
-            e = np.zeros(j + 1)
-            e[j] = 1.0
-            conv[: j + 1, j] = np.polynomial.chebyshev.cheb2poly(e)
+        n_sub = lay.N_SUB[piece]
+        conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
         fields = []
-        for k in _build.HISTORY_KEYS:
+        for k in lay.HISTORY_KEYS:
             a = np.zeros((n_lam, n_sub, deg, max(x.shape[3] for x in st.values())))
             a[: st[k].shape[0], : st[k].shape[1], : st[k].shape[2], : st[k].shape[3]] = st[k]
             fields.append(np.einsum("ij,psjk->psik", conv, a))
@@ -143,7 +139,7 @@ def _history_layout(history, log) -> dict:
                 b[..., :n_k].transpose(2, 3, 0, 1).reshape(deg, n_k, 2 * n_sub)))
         # per lambda piece, the degree its trimmed coefficients need (Horner starts there)
         need = np.array([max([int(c.split(" ", 1)[0]) if isinstance(c, str) else np.shape(c)[0]
-                              for k in _build.HISTORY_KEYS for c in history[(piece, k)][p]]
+                              for k in lay.HISTORY_KEYS for c in history[(piece, k)][p]]
                              or [1]) for p in range(n_lam)])
         layout[piece] = (per, n_sub, deg, need)
     return layout
@@ -152,13 +148,15 @@ def _history_layout(history, log) -> dict:
 def in_range(lam) -> np.ndarray:
     """Boolean mask: lambda inside the summary table's validated range [LAM_MIN, LAM_MAX]."""
     lam = np.asarray(lam, dtype=float)
-    return (lam >= LAM_MIN) & (lam <= LAM_MAX)
+    t = _tables()
+    return (lam >= t["LAM_MIN"]) & (lam <= t["LAM_MAX"])
 
 
 def history_in_range(lam) -> np.ndarray:
     """Boolean mask: lambda inside the history table's range [LAM_MIN, HISTORY_LAM_MAX]."""
     lam = np.asarray(lam, dtype=float)
-    return (lam >= LAM_MIN) & (lam <= HISTORY_LAM_MAX)
+    t = _tables()
+    return (lam >= t["LAM_MIN"]) & (lam <= t["HISTORY_LAM_MAX"])
 
 
 def _piece(lam: np.ndarray, history: bool = False):
@@ -167,10 +165,11 @@ def _piece(lam: np.ndarray, history: bool = False):
     if not np.all(in_range(lam)):
         bad = float(lam[~in_range(lam)].ravel()[0])
         raise ValueError(f"lambda = {bad!r} is outside the exact table's range "
-                         f"[{LAM_MIN:g}, {LAM_MAX:g}]; integrate instead (backend='scipy')")
+                         f"[{_tables()['LAM_MIN']:g}, {_tables()['LAM_MAX']:g}]; integrate "
+                         "instead (backend='scipy')")
     t = _tables()
     edges = t["edges"]
-    last = (int(np.count_nonzero(edges[1:] <= HISTORY_LAM_MAX)) - 1 if history
+    last = (int(np.count_nonzero(edges[1:] <= t["HISTORY_LAM_MAX"])) - 1 if history
             else len(edges) - 2)
     i = np.clip(np.searchsorted(edges, lam, side="right") - 1, 0, last)
     log = t["log"][i]
@@ -213,6 +212,139 @@ def summary(lam) -> dict:
             "xi": 2.0 * lam * v["int_F2"]}
 
 
+#: Summary fields :func:`summary_derivative` differentiates.
+DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
+                     "int_F2", "xi")
+
+
+@functools.cache
+def _derivative_coefficients() -> np.ndarray:
+    """d/dx of every stored summary series, [lambda piece, field, degree] (``chebder``: exact
+    on the stored coefficients, no new rounding beyond the recurrence's)."""
+    c = _tables()["summary"]
+    return np.polynomial.chebyshev.chebder(c, axis=2) if c.shape[2] > 1 else np.zeros_like(c)
+
+
+def _series_sum(tl, ci):
+    """sum_k tl[:, k] ci[:, :, k] in a fixed order (as ``_core``)."""
+    vals = tl[:, :1] * ci[:, :, 0]
+    for k in range(1, min(tl.shape[1], ci.shape[2])):
+        vals += tl[:, k:k + 1] * ci[:, :, k]
+    return vals
+
+
+def summary_derivative(lam, field: str = "e", contact_end: str = "delta") -> np.ndarray:
+    """d(field)/d(lambda) of the tabulated summary, from the Chebyshev series themselves.
+
+    Each stored series is differentiated term by term (``chebder``) and the chain rule applied
+    through the piece's map (x linear in lambda, or in ln lambda above ``LOG_FROM``: dx/dlambda
+    = 2 / ((b - a) lambda)) and through the stored transform (tau_d = exp(log_tau_d); e as
+    :func:`summary` forms it: e = sqrt(1 - xi) while xi = 2 lambda int_F2 < 1/2, else
+    exp(log_e); xi' = -2 e e' where xi >= 1/2, since there 2 int_F2 + 2 lambda int_F2' cancels).
+    No finite differences. Measured against Richardson-extrapolated central differences of
+    mpmath solves and against the small-lambda series (tests/test_exact_inverse.py): about
+    1e-11 relative.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        lambda in [LAM_MIN, LAM_MAX] (Eq. 11).
+    field : str
+        One of ``DERIVATIVE_FIELDS`` (Eqs. 23-24, 61, 69, 76 for their definitions).
+    contact_end : str
+        ``"delta"`` (the plate end of contact) or ``"force"`` (the force-free end,
+        :func:`zener_sym.exact.force_table.summary_derivative`; lambda > 0 there).
+
+    Returns
+    -------
+    numpy.ndarray
+        d(field)/d(lambda), float array of lambda's shape.
+
+    Raises
+    ------
+    ValueError
+        For an unknown field or contact end, or lambda outside [LAM_MIN, LAM_MAX] or not finite.
+    """
+    if contact_end == "force":
+        from . import force_table
+
+        return force_table.summary_derivative(lam, field)
+    if contact_end != "delta":
+        raise ValueError(f"unknown contact_end {contact_end!r}; allowed: 'delta' (the plate) or "
+                         f"'force' (the grains' force-free end)")
+    if not isinstance(field, str) or field not in DERIVATIVE_FIELDS:
+        raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
+                         f"{', '.join(DERIVATIVE_FIELDS)}")
+    lam_in = np.asarray(lam, dtype=float)
+    lam = lam_in.reshape(-1)
+    if not np.all(np.isfinite(lam)):
+        raise ValueError("lambda must be finite")
+    v, i, x = _core(lam)
+    t = _tables()
+    d = _derivative_coefficients()
+    tl = np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0))
+    dx = dict(zip(t["summary_keys"], _series_sum(tl, d[i]).T))
+    width = t["gb"][i] - t["ga"][i]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # dx/dlambda of the piece's variable (lambda, or ln lambda on the log pieces)
+        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)), 2.0 / width)
+    dv = {k: dx[k] * scale for k in dx}  # d(stored series)/d(lambda)
+    dv["tau_d"] = v["tau_d"] * dv["log_tau_d"]
+    xi = 2.0 * lam * v["int_F2"]
+    small = xi < 0.5
+    # below xi = 1/2 from the energy balance xi = 2 lambda int_F2 (no cancellation as
+    # lambda -> 0); above, 2 int_F2 and 2 lambda int_F2' nearly cancel (by 1e4 at lambda = 3),
+    # so xi' = -2 e e' from ln e's series. e as _core forms it (solver.restitution).
+    dxi_balance = 2.0 * v["int_F2"] + 2.0 * lam * dv["int_F2"]
+    de = np.where(small, -dxi_balance / (2.0 * v["e"]), v["e"] * dv["log_e"])
+    dxi = np.where(small, dxi_balance, -2.0 * v["e"] * de)
+    if field == "e" or field == "impulse":
+        out = de
+    elif field == "xi":
+        out = dxi
+    elif field == "F_m":
+        out = 1.5 * np.sqrt(v["delta_m"]) * dv["delta_m"]
+    elif field == "tau_dr":
+        out = dv["tau_d"] - dv["tau_dc"]
+    elif field == "eta":
+        out = (dv["tau_d"] * v["tau_dc"] - v["tau_d"] * dv["tau_dc"]) / v["tau_dc"] ** 2
+    else:
+        out = dv[field]
+    return out.reshape(lam_in.shape)
+
+
+def _one_series(lam: np.ndarray, key: str):
+    """One stored summary series and its d/dlambda at lam (1-D): only that series is summed
+    (the inverse's Newton steps need one or two of the six)."""
+    t = _tables()
+    k = t["summary_keys"].index(key)
+    i, x = _piece(lam)
+    c = t["summary"][:, k, :]
+    d = _derivative_coefficients()[:, k, :]
+    tl = np.polynomial.chebyshev.chebvander(x, c.shape[1] - 1)
+    val = np.einsum("nk,nk->n", tl, c[i])
+    der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i, : tl.shape[1]])
+    width = t["gb"][i] - t["ga"][i]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)), 2.0 / width)
+    return val, der * scale
+
+
+def log_quantity(lam, quantity: str):
+    """(ln q, d ln q / d lambda) for q = e (from the stored ln e, the form ``summary`` uses
+    where xi >= 1/2), xi = 2 lambda int_F2 (exact for Eq. 10; lambda > 0) or tau_d, each from
+    the one series it needs. For :mod:`zener_sym.exact.inverse`."""
+    lam = np.asarray(lam, dtype=float).reshape(-1)
+    if quantity == "e":
+        return _one_series(lam, "log_e")
+    if quantity == "tau_d":
+        return _one_series(lam, "log_tau_d")
+    if quantity == "xi":
+        f, df = _one_series(lam, "int_F2")
+        return np.log(2.0 * lam * f), 1.0 / lam + df / f
+    raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
+
+
 def _piece_coefficients(per, ip, tl_all, deg, n_sub):
     """[time degree, line * sub-piece], complex: one time piece's monomial coefficients per line
     (real part f's, imaginary part I's), sum_k C[j, k, 2 s + field] T_k(x_lambda). lu is sorted,
@@ -232,7 +364,7 @@ def _piece_coefficients(per, ip, tl_all, deg, n_sub):
 
 
 def _scaled_maps(name, k, lu, log, v, tau_s):
-    """Per-line constants of piece ``name``'s reduced time times k, z = k y (``table_build``:
+    """Per-line constants of piece ``name``'s reduced time times k, z = k y (``table_layout``:
     C z = sqrt(a t); B z = sqrt(a (tau_d - t)); A and M z = a (u(t) - u0) with
     u = ln(1 + (t - s) i1) + (t - s) i3 - ln(1 + (e - t) i2) from ``lin_log``, i = 1/c (0 for an
     infinite c: the term vanishes; a term that vanishes on every line is skipped))."""
@@ -240,9 +372,9 @@ def _scaled_maps(name, k, lu, log, v, tau_s):
         return {"a": k * k / v["tau_dc"]}
     if name == "B":
         return {"a": k * k / (v["tau_d"] - v["tau_w0"]), "d": v["tau_d"]}
+    params = _tables()["layout"].map_params(name, lu, log, v["tau_dc"], tau_s, v["tau_w0"])
     start, end, c1, c2, c3 = (np.broadcast_to(np.asarray(q, dtype=float), lu.shape)
-                              for q in _build.map_params(name, lu, log, v["tau_dc"], tau_s,
-                                                         v["tau_w0"]))
+                              for q in params)
     with np.errstate(invalid="ignore", divide="ignore"):  # lines without this piece: unused
         span = end - start
         u0 = -np.log1p(span / c2)
@@ -333,11 +465,13 @@ def history(lam, tau) -> dict:
     if not np.all(history_in_range(lu)):
         bad = float(lu[~history_in_range(lu)][0])
         raise ValueError(f"lambda = {bad!r} is outside the exact history table's range "
-                         f"[{LAM_MIN:g}, {HISTORY_LAM_MAX:g}]; integrate instead (backend='scipy')")
+                         f"[{_tables()['LAM_MIN']:g}, {_tables()['HISTORY_LAM_MAX']:g}]; "
+                         "integrate instead (backend='scipy')")
     tau = tau.ravel()
     v, ip, xl = _core(lu, history=True)
     log = _tables()["log"][ip]
-    tau_s = _build.split_time(lu, log, v["tau_dc"], v["tau_w0"])
+    lay = _tables()["layout"]
+    tau_s = lay.split_time(lu, log, v["tau_dc"], v["tau_w0"])
     # piece of each point: 0 C, 1 A, 2 M (empty for lambda <= LOG_FROM, tau_s = tau_w0), 3 B,
     # 4 after the contact
     # (1 + [tau >= tau_s] + [tau >= tau_w0] + [tau >= tau_d]) [tau > tau_dc]: the last factor
@@ -360,7 +494,7 @@ def history(lam, tau) -> dict:
     tl_all = np.polynomial.chebyshev.chebvander(xl, max(
         c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)
     imp_end = 1.0 + v["e"]  # after the contact the impulse keeps its final value
-    for n, name in enumerate((*_build.TIME_PIECES, None)):
+    for n, name in enumerate((*lay.TIME_PIECES, None)):
         if name is not None:
             if not np.any(piece == n):
                 continue

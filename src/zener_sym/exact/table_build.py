@@ -52,10 +52,15 @@ and compares numerically (see ``CHECK_RTOL``).
 from __future__ import annotations
 
 import functools
-import hashlib
 import pathlib
 
 import numpy as np
+
+from ..codegen import inputs_hash
+from ..codegen.tables import float_tuple, table_module
+from ..numerics.chebyshev import (cheb_coefficients, cheb_nodes, coefficient_difference,
+                                  trim_trailing)
+from .table_layout import Layout, lin_log, parse_array
 
 #: Breakpoints of the lambda pieces: the summary and history tables cover [0, 1000].
 LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0, 1000.0)
@@ -76,7 +81,7 @@ MATCH_DECAYS = 40.0
 #: Chebyshev points per lambda piece.
 N_LAM = 22
 #: Sub-pieces (equal parts of the reduced time y) per time piece; piece M exists on the ln-lambda
-#: pieces only (see ``split_time``).
+#: pieces only (see ``Layout.split_time``).
 N_SUB = {"C": 12, "A": 16, "M": 16, "B": 12}
 #: Chebyshev points per sub-piece of each time piece: low degrees keep the evaluation cheap
 #: (each degree costs one pass over the points), more sub-pieces keep the accuracy.
@@ -109,62 +114,18 @@ HISTORY_QUANTUM = 1e-15
 CHECK_RTOL = 1e-10
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest_over_lam")
-HISTORY_KEYS = ("f", "I")
-TIME_PIECES = ("C", "A", "M", "B")
-
-
-def cheb_nodes(n: int) -> np.ndarray:
-    """Chebyshev points of the first kind, x_k = cos(pi (k + 1/2) / n), k = 0..n-1."""
-    return np.cos(np.pi * (np.arange(n) + 0.5) / n)
-
-
-def cheb_coefficients(values: np.ndarray, axis: int = 0) -> np.ndarray:
-    """Coefficients of the interpolant through values at ``cheb_nodes(n)`` along ``axis`` (DCT-II)."""
-    values = np.moveaxis(np.asarray(values, dtype=float), axis, 0)
-    n = values.shape[0]
-    k = np.arange(n)
-    m = np.cos(np.pi * np.outer(k, k + 0.5) / n) * (2.0 / n)
-    m[0] *= 0.5
-    return np.moveaxis(np.tensordot(m, values, axes=1), 0, axis)
-
-
-def split_time(lam, log_piece, tau_dc, tau_w0):
-    """tau_s, the end of piece A and start of piece M: tau_w0 for lambda <= LOG_FROM (no piece
-    M), tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)) above."""
-    lam = np.asarray(lam, dtype=float)
-    with np.errstate(divide="ignore"):
-        big = np.where(log_piece, lam, 1.0)
-        return np.where(log_piece, tau_dc + big * (S_ORBIT + S_TRANSIENT * big ** (-5.0 / 3.0)),
-                        tau_w0)
-
-
-def map_params(piece, lam, log_piece, tau_dc, tau_s, tau_w0):
-    """(start, end, c1, c2, c3) of the logarithmic-linear map ``lin_log`` of piece A or M."""
-    lam = np.asarray(lam, dtype=float)
-    inf = np.full(lam.shape, np.inf)
-    if piece == "A":
-        with np.errstate(divide="ignore"):
-            c1 = C_STRETCH * np.where(log_piece, (LOG_FROM / np.where(log_piece, lam, 1.0))
-                                      ** (2.0 / 3.0), 1.0)
-        return tau_dc, tau_s, c1, np.where(log_piece, inf, C_END * (1.0 + lam)), inf
-    return tau_s, tau_w0, inf, lam, lam
-
-
-def lin_log(tau, start, end, c1, c2, c3):
-    """Reduced time y in [0, 1] on [start, end]: u = ln(1 + (tau - start)/c1) + (tau - start)/c3
-    - ln(1 + (end - tau)/c2), normalised (c = inf drops a term). The logarithms resolve a
-    fast start (the relaxation after tau_dc, scale c1) and a change of regime at the end (where
-    w -> 0, scale c2); the linear term the orbit's steady decay (time scale c3 = lambda)."""
-    span = end - start
-    u0, u1 = -np.log1p(span / c2), np.log1p(span / c1) + span / c3
-    u = np.log1p((tau - start) / c1) + (tau - start) / c3 - np.log1p((end - tau) / c2)
-    return (u - u0) / (u1 - u0)
+#: The layout the runtime reads back from the generated table (``table_layout.Layout.of``).
+LAYOUT = Layout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, HISTORY_TO=HISTORY_TO,
+                C_STRETCH=C_STRETCH, C_END=C_END, S_ORBIT=S_ORBIT, S_TRANSIENT=S_TRANSIENT,
+                N_SUB=N_SUB)
+HISTORY_KEYS = LAYOUT.HISTORY_KEYS
+TIME_PIECES = LAYOUT.TIME_PIECES
 
 
 def time_nodes(piece: str, y: np.ndarray, tau_dc: float, tau_w0: float, tau_d: float,
                params=None) -> np.ndarray:
     """tau at the reduced time y in [0, 1] of one time piece (see the module docstring); pieces
-    A and M invert ``lin_log`` (``params`` from ``map_params``) by bisection (monotone)."""
+    A and M invert ``lin_log`` (``params`` from ``Layout.map_params``) by bisection (monotone)."""
     if piece == "C":
         return tau_dc * y * y
     if piece == "B":
@@ -315,12 +276,13 @@ def piece_nodes(a: float, b: float) -> np.ndarray:
 
 def _history_samples(hist, tau_dc, tau_w0, tau_d, lam, log_piece) -> dict:
     """{(piece, "f"/"I"): [sub, point]} from hist(tau) -> (delta, w) at the sub-pieces' nodes."""
-    tau_s = float(split_time(lam, log_piece, tau_dc, tau_w0))
+    tau_s = float(LAYOUT.split_time(lam, log_piece, tau_dc, tau_w0))
     out = {}
     for piece in TIME_PIECES:
         if piece == "M" and not log_piece:
             continue
-        params = tuple(float(c) for c in map_params(piece, lam, log_piece, tau_dc, tau_s, tau_w0))
+        params = tuple(float(c) for c in LAYOUT.map_params(piece, lam, log_piece, tau_dc, tau_s,
+                                                           tau_w0))
         y = sub_nodes(piece)
         tau = time_nodes(piece, y, tau_dc, tau_w0, tau_d, params)
         d, w = hist(tau.ravel())
@@ -351,26 +313,6 @@ def node_data(lam: float) -> dict:
     return out
 
 
-def _trim(c: np.ndarray) -> np.ndarray:
-    """Drop trailing rows/columns whose coefficients are all below TRIM of the largest."""
-    big = np.abs(c) > TRIM * np.abs(c).max()
-    if c.ndim == 1:
-        return c[: np.nonzero(big)[0].max() + 1]
-    rows = np.nonzero(big.any(axis=1))[0].max() + 1
-    cols = np.nonzero(big.any(axis=0))[0].max() + 1
-    return c[:rows, :cols]
-
-
-def _trim_weighted(c: np.ndarray, weight: float) -> np.ndarray:
-    """Drop trailing rows/columns of a history array below HISTORY_TRIM / weight."""
-    big = np.abs(c) * weight > HISTORY_TRIM
-    if not big.any():
-        return c[:1, :1]
-    rows = np.nonzero(big.any(axis=1))[0].max() + 1
-    cols = np.nonzero(big.any(axis=0))[0].max() + 1
-    return c[:rows, :cols]
-
-
 def build_tables() -> dict:
     """All coefficients: {"summary": {key: [1-D per lambda piece]}, "history": {(piece, key): [2-D]}}.
 
@@ -387,7 +329,8 @@ def build_tables() -> dict:
         else:
             data = [node_data(float(x)) for x in lams]
         for k in SUMMARY_KEYS:
-            summary[k].append(_trim(cheb_coefficients(np.array([d[k] for d in data]))))
+            c = cheb_coefficients(np.array([d[k] for d in data]))
+            summary[k].append(trim_trailing(c, np.abs(c) > TRIM * np.abs(c).max()))
         if b > HISTORY_TO:
             continue
         for key in history:
@@ -402,20 +345,18 @@ def build_tables() -> dict:
             else:
                 wt = np.ones(c.shape[1])
             # one [time degree, lambda degree] matrix per sub-piece
-            history[key].append(tuple(_trim_weighted(c[:, j, :].T, wt[j])
-                                      for j in range(c.shape[1])))
+            # drop trailing rows/columns that move the field by less than HISTORY_TRIM
+            history[key].append(tuple(trim_trailing(c[:, j, :].T, np.abs(c[:, j, :].T) * wt[j]
+                                                    > HISTORY_TRIM) for j in range(c.shape[1])))
             weights[key].append(tuple(float(x) for x in wt))
     return {"summary": summary, "history": history, "weights": weights}
 
 
-def inputs_hash() -> str:
-    """SHA-256 (16 hex digits) of this builder and the solver it samples."""
+def input_files() -> list[pathlib.Path]:
+    """The sources the table is built from (its inputs hash): this builder, the layout it
+    writes and the solver it samples."""
     here = pathlib.Path(__file__).resolve().parent
-    h = hashlib.sha256()
-    for name in ("table_build.py", "solver.py"):
-        h.update(name.encode())
-        h.update((here / name).read_bytes().replace(b"\r\n", b"\n"))
-    return h.hexdigest()[:16]
+    return [here / name for name in ("table_build.py", "table_layout.py", "solver.py")]
 
 
 def _fmt_q(a: np.ndarray, quantum: float) -> str:
@@ -433,15 +374,9 @@ def _fmt_q(a: np.ndarray, quantum: float) -> str:
     return f"{a.shape[0]} {a.shape[1]} " + " ".join(one(v) for v in a.ravel())
 
 
-def parse_array(text: str) -> np.ndarray:
-    """The 2-D array written by ``_fmt_q``."""
-    v = np.array(text.split(), dtype=float)
-    return v[2:].reshape(int(v[0]), int(v[1]))
-
-
 def _fmt(a: np.ndarray, indent: str) -> str:
     if a.ndim == 1:
-        return "(" + ", ".join(f"{float(v):.15g}" for v in a) + ",)"
+        return float_tuple(a, 15)
     rows = [indent + "    " + _fmt(r, "") + "," for r in a]
     return "(\n" + "\n".join(rows) + "\n" + indent + ")"
 
@@ -451,28 +386,10 @@ def render(tables: dict | None = None) -> str:
     import scipy
 
     t = build_tables() if tables is None else tables
-    lines = [
-        '"""Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= '
-        f'{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}.\n',
-        "GENERATED by `zener-sym exact-table`: DO NOT EDIT. Built by zener_sym.exact.table_build from",
-        f"scipy {scipy.__version__} solves at rtol {RTOL:g}; `zener-sym exact-table --check` rebuilds and",
-        "compares numerically (the node values come from a floating-point integrator, so the bytes",
-        "are not reproducible across machines).\n",
-        f"Inputs hash: {inputs_hash()}",
-        '"""',
-        f"INPUTS_HASH = {inputs_hash()!r}",
-        f"LAM_PIECES = {LAM_PIECES!r}",
-        f"LOG_FROM = {LOG_FROM!r}",
-        f"HISTORY_TO = {HISTORY_TO!r}",
-        f"C_STRETCH = {C_STRETCH!r}",
-        f"C_END = {C_END!r}",
-        f"S_ORBIT = {S_ORBIT!r}",
-        f"S_TRANSIENT = {S_TRANSIENT!r}",
-        f"N_SUB = {N_SUB!r}",
-        "",
-        "#: field -> one tuple of Chebyshev coefficients per lambda piece",
-        "SUMMARY = {",
-    ]
+    lines = ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
+             *LAYOUT.assignments(), "",
+             "#: field -> one tuple of Chebyshev coefficients per lambda piece",
+             "SUMMARY = {"]
     for k in SUMMARY_KEYS:
         lines.append(f"    {k!r}: (")
         for c in t["summary"][k]:
@@ -481,7 +398,7 @@ def render(tables: dict | None = None) -> str:
     lines += ["}", "",
               "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
               "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
-              "#: (table_build.parse_array)",
+              "#: (table_layout.parse_array)",
               "HISTORY = {"]
     for key in sorted(t["history"]):
         lines.append(f"    {key!r}: (")
@@ -491,8 +408,14 @@ def render(tables: dict | None = None) -> str:
                 lines.append(f"            {_fmt_q(c, HISTORY_QUANTUM / wt)!r},")
             lines.append("        ),")
         lines.append("    ),")
-    lines += ["}", ""]
-    return "\n".join(lines)
+    lines += ["}"]
+    title = ("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
+             f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}.")
+    provenance = (f"Built by zener_sym.exact.table_build from scipy {scipy.__version__} solves at "
+                  f"rtol {RTOL:g}; `zener-sym exact-table --check` rebuilds and compares "
+                  "numerically (the node values come from a floating-point integrator, so the "
+                  "bytes are not reproducible across machines).")
+    return table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
 
 
 def table_path() -> pathlib.Path:
@@ -530,15 +453,10 @@ def compare(stored: dict, fresh: dict) -> list[str]:
                 bad.append(f"{kind} {key}: {len(new)} arrays, the stored table has {len(old)}")
                 continue
             for i, (c_new, c_old, q) in enumerate(zip(new, old, quanta)):
-                c_old = np.asarray(c_old, dtype=float)
-                shape = tuple(max(p, q) for p, q in zip(c_new.shape, c_old.shape))
-                a, b = np.zeros(shape), np.zeros(shape)
-                a[tuple(slice(0, n) for n in c_new.shape)] = c_new
-                b[tuple(slice(0, n) for n in c_old.shape)] = c_old
                 # history: a change that moves the field by less than HISTORY_TRIM of its scale
                 # (the trimming and rounding level) passes too
                 floor = q * HISTORY_TRIM / HISTORY_QUANTUM
-                err = np.abs(a - b).max() / max(np.abs(a).max(), floor / CHECK_RTOL)
+                err = coefficient_difference(c_new, c_old, floor / CHECK_RTOL)
                 if not err <= CHECK_RTOL:
                     bad.append(f"{kind} {key} array {i}: relative difference {err:.2e} "
                                f"> {CHECK_RTOL:g}")

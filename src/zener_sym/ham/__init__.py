@@ -1,11 +1,12 @@
 """Numerics behind the homotopy-analysis (HAM) kernels.
 
-The generated kernels (``zener_sym.generated``) call the leaf helpers here, which import nothing
-else of the package:
+The kernels: the generated formulas (``zener_sym.generated.ham0_*``, ``ham1_*``) wrapped in
+plain runtime code, once per backend (the numerical primitives come from ``zener_sym.numerics``):
 
-- :mod:`.quadrature`: Gauss-Jacobi quadrature of the square-root integrals (float64);
-- :mod:`.chebyshev`: Chebyshev nodes, series, antiderivatives and the ``p3`` helper;
-- :mod:`.mp`: their mpmath counterparts.
+- :mod:`.runtime_numpy`: ``ham0``, ``ham1`` in float64 numpy (checks, broadcasting, square-root
+  integrals by Gauss-Jacobi quadrature, roots, contact integrals);
+- :mod:`.runtime_mpmath`: ``ham0``, ``ham1`` at any precision (guard digits, 2F1 closed forms,
+  findroot).
 
 Built on top of the generated kernels:
 

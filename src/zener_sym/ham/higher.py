@@ -54,6 +54,9 @@ import numbers
 import numpy as np
 import scipy.optimize
 
+from ..numerics.chebyshev import cheb_nodes
+from ..numerics.maps import smoothstep, smoothstep_inverse, smoothstep_slope
+
 __all__ = ["FORMULATIONS", "PAPER_MAX_ORDER", "STRAINED_MAX_ORDER", "N_NODES", "TAIL_TOL",
            "C0_RANGE", "HamSolution", "solve", "optimal_c0", "squared_residual", "check_order",
            "check_c0", "check_formulation"]
@@ -79,7 +82,7 @@ C0_RANGE = (-2.0, -0.05)
 
 # ------------------------------------------------------------------------- fixed matrices
 def _first_kind(n):
-    x = np.cos(np.pi * (np.arange(n) + 0.5) / n)[::-1].copy()
+    x = cheb_nodes(n)[::-1].copy()
     return x, np.linalg.inv(_C.chebvander(x, n - 1))
 
 
@@ -101,8 +104,8 @@ _CUM_END = _mm(_C.chebvander(np.array([1.0]), N_NODES), _INTC)[0] * 0.5
 _NQ = 96
 _QX, _QFIT = _first_kind(_NQ)
 _QV = 0.5 * (1.0 + _QX)
-_QMAP = _QV * _QV * (3.0 - 2.0 * _QV)
-_QDMAP = 6.0 * _QV * (1.0 - _QV)
+_QMAP = smoothstep(_QV)
+_QDMAP = smoothstep_slope(_QV)
 _QINTC = _mm(_C.chebint(np.eye(_NQ), lbnd=-1.0, axis=0), _QFIT)
 _QCUM = _mm(_C.chebvander(_QX, _NQ), _QINTC) * 0.5
 _QEND = _mm(_C.chebvander(np.array([1.0]), _NQ), _QINTC)[0] * 0.5
@@ -180,7 +183,7 @@ def check_formulation(formulation) -> str:
 
 # ------------------------------------------------------------------ the linear operator
 def _lam_params(lam):
-    from ..generated import ham1_numpy
+    from .runtime_numpy import ham1 as ham1_numpy
 
     lam = float(lam)
     if not (math.isfinite(lam) and 0.0 <= lam < ham1_numpy.LAM_CRIT):
@@ -524,7 +527,7 @@ class HamSolution:
                               scl=0.5)
             sel = th >= A
             frac = np.clip((th[sel] - A) / L, 0.0, 1.0)
-            v = 0.5 - np.sin(np.arcsin(np.clip(1.0 - 2.0 * frac, -1.0, 1.0)) / 3.0)
+            v = smoothstep_inverse(frac)
             val = I0 + _C.chebval(2.0 * v - 1.0, coef)
             imp[sel] = val
             I0 = I0 + float(_C.chebval(1.0, coef))

@@ -14,7 +14,7 @@ import numpy as np
 
 
 def grid():
-    from ..generated import ham1_numpy as h1
+    from .runtime_numpy import ham1 as h1
 
     lams = np.concatenate([np.round(np.arange(0, 2.41, 0.2), 10), [2.4399]])
     rows = []
@@ -27,10 +27,10 @@ def grid():
 
 
 def measure(dps=30):
-    from ..generated import ham0_mpmath as m0
-    from ..generated import ham0_numpy as h0
-    from ..generated import ham1_mpmath as m1
-    from ..generated import ham1_numpy as h1
+    from .runtime_mpmath import ham0 as m0
+    from .runtime_mpmath import ham1 as m1
+    from .runtime_numpy import ham0 as h0
+    from .runtime_numpy import ham1 as h1
 
     kernels = [("ham0", "delta", h0, m0), ("ham0", "delta_dot", h0, m0), ("ham0", "impulse", h0, m0),
                ("ham1", "delta", h1, m1), ("ham1", "delta_dot", h1, m1), ("ham1", "force", h1, m1)]

@@ -36,7 +36,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import chebyshev as hn
+from ..numerics.chebyshev import cheb_nodes, clenshaw_take
+from ..numerics.integrate import cumulative_rows
 
 __all__ = ["Ham1Series", "rows_of", "summary_numpy", "N_GLOBAL", "N_PIECES", "N_LOCAL", "A_MAX", "TAIL_TOL",
            "SPAN_PAST"]
@@ -61,7 +62,7 @@ _SCAN = 8
 
 def _first_kind(n):
     """Chebyshev points of the first kind, ascending, and the values -> coefficients matrix."""
-    x = np.cos(np.pi * (np.arange(n) + 0.5) / n)[::-1].copy()
+    x = cheb_nodes(n)[::-1].copy()
     return x, np.linalg.inv(_C.chebvander(x, n - 1))
 
 
@@ -108,9 +109,9 @@ def _rowmul(A, B):
 
 
 def _h1():
-    from ..generated import ham1_numpy
+    from .runtime_numpy import ham1
 
-    return ham1_numpy
+    return ham1
 
 
 class Ham1Series:
@@ -242,7 +243,7 @@ class Ham1Series:
         x2 = np.minimum((tau - tpi) * (2.0 / self._seg2_den.take(rows)) - 1.0, 1.0)
         x = np.where(on1, x1, x2)
         idx = np.where(on1, rows * N_PIECES + p, self.lam.size * N_PIECES + rows)
-        d = hn.clenshaw_take(self._cT, idx, x)
+        d = clenshaw_take(self._cT, idx, x)
         return np.where(tau < td, np.maximum(d, 0.0), 0.0)
 
     def impulse(self, rows, tau):
@@ -304,9 +305,9 @@ class Ham1Series:
         fun = lambda tt, r: power(self.delta(np.broadcast_to(r, tt.shape), tt))  # noqa: E731
         end = np.minimum(tau, safe.take(rows))
         tpi = self.tpi.take(rows)
-        first = hn.cumulative_rows(fun, np.zeros(u.size), np.minimum(safe, self.tpi), rows,
+        first = cumulative_rows(fun, np.zeros(u.size), np.minimum(safe, self.tpi), rows,
                                    np.minimum(end, tpi))
-        second = hn.cumulative_rows(fun, self.tpi, np.maximum(safe, self.tpi), rows,
+        second = cumulative_rows(fun, self.tpi, np.maximum(safe, self.tpi), rows,
                                     np.maximum(end, tpi))
         return first + second
 

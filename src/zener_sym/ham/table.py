@@ -20,31 +20,34 @@ import importlib
 
 import numpy as np
 
-from . import table_build as _build
-
-__all__ = ["SUMMARY_RTOL", "in_range", "summary", "lam_max"]
+__all__ = ["SUMMARY_RTOL", "in_range", "summary", "lam_max", "variable_ends"]
 
 #: Documented (and tested) relative error bound of every ham1 summary field.
 SUMMARY_RTOL = 1e-11
 
 
+def variable_ends(kind: str, a: float, b: float) -> tuple[float, float]:
+    """The Chebyshev variable's ends on the lambda piece [a, b] of kind ``kind``: 'lam' (the
+    variable is lambda) or 'sqrt' (sqrt(lambda - a))."""
+    return (a, b) if kind == "lam" else (0.0, float(np.sqrt(b - a)))
+
+
 @functools.cache
 def _tables() -> dict:
-    """The generated table, loaded on first use, as arrays."""
+    """The generated table (the one source of its pieces and fields), loaded on first use, as
+    arrays."""
     t = importlib.import_module("zener_sym.generated.ham1_table")
-    if tuple(t.COEF) != _build.KEYS or len(t.PIECES) != len(_build.N_NODES):
-        raise RuntimeError("generated/ham1_table.py does not match zener_sym.ham.table_build "
-                           "(stale table): run `zener-sym ham1-table`")
+    keys = tuple(t.COEF)
     kinds = [p[0] for p in t.PIECES]
     starts = np.array([float(p[1]) for p in t.PIECES])
     ends = np.array([float(p[2]) for p in t.PIECES])
-    ga, gb = np.array([_build.variable_ends(k, a, b) for k, a, b in t.PIECES]).T
+    ga, gb = np.array([variable_ends(k, a, b) for k, a, b in t.PIECES]).T
     deg = max(len(c) for v in t.COEF.values() for c in v)
-    coef = np.zeros((len(t.PIECES), deg, len(_build.KEYS)))  # [piece, degree, field]
-    for j, key in enumerate(_build.KEYS):
+    coef = np.zeros((len(t.PIECES), deg, len(keys)))  # [piece, degree, field]
+    for j, key in enumerate(keys):
         for i, c in enumerate(t.COEF[key]):
             coef[i, : len(c), j] = c
-    return {"inner": starts[1:], "start": starts, "top": float(ends[-1]),
+    return {"keys": keys, "inner": starts[1:], "start": starts, "top": float(ends[-1]),
             "sqrt": np.array([k == "sqrt" for k in kinds]), "ga": ga, "gb": gb,
             "k": np.arange(deg, dtype=float), "coef": coef}
 
@@ -77,7 +80,7 @@ def summary(lam) -> dict:
     # T_k(x) = cos(k arccos x): accurate to a few ulp of k arccos(x), and one numpy call
     T = np.cos(np.arccos(x)[:, None] * t["k"])  # [lambda, degree]
     v = np.matmul(T[:, None, :], t["coef"][i])[:, 0, :]  # [lambda, field], row by row
-    d = {key: v[:, j].reshape(lam.shape) for j, key in enumerate(_build.KEYS)}
+    d = {key: v[:, j].reshape(lam.shape) for j, key in enumerate(t["keys"])}
     return {"delta_m": d["delta_m"], "tau_dc": d["tau_dc"], "tau_d": np.exp(d["log_tau_d"]),
             "e": np.exp(d["log_e"]), "F_m": d["delta_m"] ** 1.5, "impulse": d["impulse"],
             "int_F2": d["int_F2"]}

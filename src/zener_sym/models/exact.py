@@ -19,8 +19,8 @@ high precision (mpmath).
 ``contact_end``: ``"delta"`` (default, the plate: contact ends at delta = 0) or ``"force"`` (the
 viscoelastic-grain reading of Eq. (10): contact ends where delta^{3/2} + lambda (delta^{3/2})'
 vanishes; the force, impulse, F_m and int_F2 are then those of the grain contact, see
-:mod:`zener_sym.exact.force_end`). ``"force"`` has no tables: ``backend="auto"`` integrates with
-scipy, ``"table"`` is refused.
+:mod:`zener_sym.exact.force_end`). ``"force"`` has its own tables
+(:mod:`zener_sym.exact.force_table`, same range and error bounds), used as the plate's.
 
 Every option value is validated before any work (``exact.solver.check_options``,
 ``exact.mp.check_dps``): a bad one is a ValueError naming the allowed values.
@@ -30,6 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..exact import force_end as _force
+from ..exact import force_table as _force_fast
 from ..exact import mp as _exact_mp
 from ..exact import solver as _exact
 from ..exact import table as _fast
@@ -50,29 +51,29 @@ class ExactModel(Model):
     options = ("rtol", "method", "backend", "dps", "contact_end")
 
     def _split(self, lam, options, history=False):
-        """Mask of lambda to take from the tables, and the options left for integration.
+        """Mask of lambda to take from the tables, the options left for integration, and the
+        table module (the plate's or the force-free end's).
 
         The summary and history tables both cover [0, 1000] (``history=True``: the history's).
         A lambda broadcast along its last axis (the api's view of a lambda column against a tau
         grid) is checked once per line and gets a broadcast mask, not one of the grid's size."""
-        check = _fast.history_in_range if history else _fast.in_range
+        options = dict(options)
+        backend = options.pop("backend", "auto")
+        end = _force.check_contact_end(options.get("contact_end", "delta"))
+        if end == "force":
+            tab = _force_fast
+            check = _force_fast.in_range
+            top = _force_fast.LAM_MAX
+        else:
+            options.pop("contact_end", None)
+            tab = _fast
+            check = _fast.history_in_range if history else _fast.in_range
+            top = _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
         column = lam.ndim >= 1 and lam.shape[-1] > 1 and lam.strides[-1] == 0
 
         def in_range(x):
             return np.broadcast_to(check(x[..., :1]), x.shape) if column else check(x)
 
-        top = _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
-        options = dict(options)
-        backend = options.pop("backend", "auto")
-        end = _force.check_contact_end(options.get("contact_end", "delta"))
-        if end == "force":
-            if backend == "table":
-                raise ValueError("contact_end='force' has no tables; use backend='auto' or 'scipy' "
-                                 "(integration) or 'mpmath'")
-            if backend == "auto":
-                backend = "scipy"
-        else:
-            options.pop("contact_end", None)
         if not isinstance(backend, str) or backend not in BACKENDS:
             raise ValueError(f"unknown backend {backend!r} for model 'exact'; allowed: "
                              f"{', '.join(BACKENDS)}")
@@ -84,24 +85,26 @@ class ExactModel(Model):
                             if k in options})
         if "dps" in options:
             options["dps"] = _exact_mp.check_dps(options["dps"])
+        table_options = {k: v for k, v in options.items() if k != "contact_end"}
         if backend == "table":
-            if options:
-                raise ValueError(f"option {sorted(options)[0]!r} does not go with backend='table'")
+            if table_options:
+                raise ValueError(f"option {sorted(table_options)[0]!r} does not go with "
+                                 f"backend='table'")
             if not np.all(in_range(lam)):
                 bad = float(lam[~in_range(lam)].ravel()[0])
                 raise ValueError(
                     f"lambda = {bad!r} is outside the exact {'history' if history else 'summary'}"
-                    f" table's range [{_fast.LAM_MIN:g}, {top:g}]; use backend='auto' "
+                    f" table's range [{tab.LAM_MIN:g}, {top:g}]; use backend='auto' "
                     f"(integrates outside) or 'scipy'")
-            return np.broadcast_to(True, lam.shape), None
+            return np.broadcast_to(True, lam.shape), None, tab
         if backend == "auto":
             if options.keys() & {"rtol", "method"}:
                 backend = "scipy"  # an integrator tolerance was asked for: integrate everything
             else:
                 if "dps" in options:
                     raise ValueError("option 'dps' goes with backend='mpmath'")
-                return in_range(lam), ("scipy", options)
-        return np.broadcast_to(False, lam.shape), (backend, options)
+                return in_range(lam), ("scipy", options), tab
+        return np.broadcast_to(False, lam.shape), (backend, options), tab
 
     def _solutions(self, lam_values, backend, options):
         options = dict(options)
@@ -118,10 +121,10 @@ class ExactModel(Model):
         return {float(x): solve(x, **options) for x in np.unique(lam_values)}
 
     def _summary(self, lam, **options):
-        fast, rest = self._split(lam, options)
+        fast, rest, tab = self._split(lam, options)
         out = {f: np.empty(lam.shape) for f in self.summary_fields}
         if fast.any():
-            v = _fast.summary(lam[fast])
+            v = tab.summary(lam[fast])
             for f in self.summary_fields:
                 out[f][fast] = v[f]
         if not fast.all():
@@ -133,13 +136,13 @@ class ExactModel(Model):
         return out
 
     def _history(self, lam, tau, **options):
-        fast, rest = self._split(lam, options, history=True)
+        fast, rest, tab = self._split(lam, options, history=True)
         if fast.all():  # shapes kept (the table sees a broadcast lambda column as such)
-            v = _fast.history(lam, tau)
+            v = tab.history(lam, tau)
             return {f: v[f] for f in self.history_fields}
         out = {f: np.empty(tau.shape) for f in self.history_fields}
         if fast.any():
-            v = _fast.history(lam[fast], tau[fast])
+            v = tab.history(lam[fast], tau[fast])
             for f in self.history_fields:
                 out[f][fast] = v[f]
         if not fast.all():

@@ -16,7 +16,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 
-from ..blocks import field_buffers, line_blocks
+from ..numerics.blocks import field_buffers, line_blocks
 from .base import Model, register
 
 #: Points per block of ham0's history (about 16 000: each block calls the generated kernels,
@@ -25,11 +25,14 @@ _BLOCK = 16384
 
 
 def _gen(name):
-    """A generated module, imported on first use: ``zener-sym generate`` must run (and rewrite
-    generated/) even when the committed kernels are stale or broken."""
+    """The HAM kernels ``name`` ("ham0_numpy", "ham1_mpmath", ...: ``ham0``/``ham1`` of
+    ``zener_sym.ham.runtime_numpy`` or ``runtime_mpmath``), imported on first use:
+    ``zener-sym generate`` must run (and rewrite generated/) even when the committed kernels
+    are stale or broken."""
     import importlib
 
-    return importlib.import_module(f"zener_sym.generated.{name}")
+    order, backend = name.split("_")
+    return getattr(importlib.import_module(f"zener_sym.ham.runtime_{backend}"), order)
 
 
 def _backend(options):
@@ -107,9 +110,9 @@ class Ham0(_HamModel):
         """The numpy history, one block of lines at a time (``blocks.line_blocks``): the generated
         delta0 (35) on its contact (``delta_contact``), and the impulse (47) omega0^{-5/2}
         K_s(3 beta / (2 omega0), omega0 tau) from the per-rate Chebyshev series of K_s
-        (``ham.quadrature.KsSeries``, within 1e-13 of the generated h0.impulse's quadrature,
+        (``numerics.sqrt_integrals.KsSeries``, within 1e-13 of the generated h0.impulse's quadrature,
         tests), its rates contracted once for all blocks."""
-        from ..ham.quadrature import A_SERIES, KsSeries, impulse_s
+        from ..numerics.sqrt_integrals import A_SERIES, KsSeries, impulse_s
 
         shape = tau.shape
         column = lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(
@@ -177,7 +180,7 @@ class Ham1(_HamModel):
                 k, beta, omega0 = m1.params(float(x))
                 tpi = mpmath.pi / omega0
                 f2 = lambda t: m1.force(t, float(x)) ** 2  # noqa: E731
-                from ..ham.mp import contact_integral_mp
+                from ..numerics.mp import contact_integral_mp
 
                 J = contact_integral_mp(f2, 0, min(td, tpi)) + contact_integral_mp(f2, tpi, max(td, tpi))
                 e = -m1.delta_dot(td, float(x))

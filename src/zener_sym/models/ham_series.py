@@ -55,9 +55,9 @@ class HamSeries(Model):
 
     @property
     def lam_bound(self):
-        from ..generated import ham1_numpy
+        from ..ham.runtime_numpy import LAM_CRIT
 
-        return ham1_numpy.LAM_CRIT
+        return LAM_CRIT
 
     def _summary(self, lam, **options):
         order, c0, formulation = _opts(options)

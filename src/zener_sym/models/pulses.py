@@ -17,7 +17,7 @@ import functools
 import numpy as np
 
 from . import formulas as fm
-from ..ham.quadrature import impulse_s
+from ..numerics.sqrt_integrals import impulse_s
 from .base import REGISTRY, Model, register
 
 
@@ -109,7 +109,7 @@ class Reed(_Sine):
     def _impulse(self, x):
         # int_0^x sin^{3/2} = K_s(0, x): the closed form is an incomplete beta function
         # (formulas.int_sin32, which the tests compare), but scipy's betainc costs about 1 us a
-        # point; the Chebyshev series of K_s (ham.quadrature.impulse_s) agree to 1e-14 at a
+        # point; the Chebyshev series of K_s (numerics.sqrt_integrals.impulse_s) agree to 1e-14 at a
         # tenth of that
         # one rate (0), broadcast: impulse_s checks and sorts it once, not once per point
         return fm.A_REED / self.Omega * impulse_s(np.broadcast_to(0.0, x.shape), x)

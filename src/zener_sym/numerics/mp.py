@@ -1,7 +1,10 @@
-"""mpmath counterparts of ``zener_sym.ham.chebyshev`` for the generated mpmath kernels."""
+"""mpmath twins of the float64 primitives: P3 (``elementary.p3``) and the smoothstep-mapped contact
+integral (``integrate.contact_integral``), for the mpmath HAM kernels."""
 from __future__ import annotations
 
 import mpmath
+
+from .maps import smoothstep, smoothstep_slope
 
 __all__ = ["p3_mp", "contact_integral_mp"]
 
@@ -27,5 +30,5 @@ def contact_integral_mp(fun, A, B):
     if B <= A:
         return mpmath.mpf(0)
     L = B - A
-    return L * mpmath.quad(lambda v: fun(A + L * v * v * (3 - 2 * v)) * 6 * v * (1 - v), [0, 1],
+    return L * mpmath.quad(lambda v: fun(A + L * smoothstep(v)) * smoothstep_slope(v), [0, 1],
                            method="gauss-legendre")

@@ -37,8 +37,8 @@ import functools
 import numpy as np
 from scipy.special import roots_jacobi
 
-from ..blocks import BLOCK
-from .chebyshev import horner_take
+from .blocks import BLOCK
+from .chebyshev import cheb_fit_matrix, cheb_nodes, cheb_to_monomial, horner_take
 
 __all__ = ["K_FUNCS", "sqrt_integrals", "N_NODES", "CUT"]
 
@@ -151,7 +151,7 @@ def _flat(a, th, names):
 # from the quadrature above at Chebyshev points. G and H are analytic (sin^{3/2} t =
 # t^{3/2} (sin t / t)^{3/2}, exp entire), so both series converge geometrically. Per distinct a
 # the a-direction is contracted once and each piece's theta series is turned into monomials;
-# each phase then costs one short polynomial by Horner's rule (ham.chebyshev.horner_take).
+# each phase then costs one short polynomial by Horner's rule (numerics.chebyshev.horner_take).
 # exp(-a t) makes G steep for large a: the series serve a <= A_SERIES, the rule the rest.
 
 #: Pieces per half of [0, pi] (in theta on the left, in r on the right), Chebyshev points in
@@ -168,16 +168,6 @@ _WIDTH = np.pi / 2.0 / N_PIECES
 _BLOCK = BLOCK
 
 
-def _cheb_points(n):
-    return np.cos(np.pi * (np.arange(n) + 0.5) / n)
-
-
-def _dct(n):
-    m = np.cos(np.pi * np.outer(np.arange(n), np.arange(n) + 0.5) / n) * (2.0 / n)
-    m[0] *= 0.5
-    return m
-
-
 _KS_TABLE = None
 
 
@@ -186,11 +176,11 @@ def _ks_table():
     4000 quadrature points)."""
     global _KS_TABLE
     if _KS_TABLE is None:
-        a = A_SERIES / 2.0 * (_cheb_points(N_RATE) + 1.0)
-        dt, da = _dct(N_SERIES), _dct(N_RATE)
+        a = A_SERIES / 2.0 * (cheb_nodes(N_RATE) + 1.0)
+        dt, da = cheb_fit_matrix(N_SERIES), cheb_fit_matrix(N_RATE)
         cG, cH = [], []
         for p in range(N_PIECES):
-            y = _WIDTH * (p + 0.5 * (_cheb_points(N_SERIES) + 1.0))  # theta or r in the piece
+            y = _WIDTH * (p + 0.5 * (cheb_nodes(N_SERIES) + 1.0))  # theta or r in the piece
             A, Y = np.meshgrid(a, y)  # [theta node, a node]
             G = _left(A, Y, ("s",))["s"] / Y**2.5
             H = _right(A, Y, ("s",))["s"] / Y**2.5  # integral over [pi - r, pi], no cancellation
@@ -230,15 +220,6 @@ def impulse_s(a, theta):
     return out
 
 
-@functools.lru_cache(maxsize=None)
-def _cheb_to_monomial(n):
-    """[power, Chebyshev degree]: the monomial coefficients of T_0 ... T_{n-1} on [-1, 1]."""
-    m = np.zeros((n, n))
-    for j in range(n):
-        m[: j + 1, j] = np.polynomial.chebyshev.cheb2poly(np.eye(n)[j])[: j + 1]
-    return m
-
-
 @functools.cache
 def _ks_pieces():
     """[theta degree, q, a degree]: K_s's Chebyshev series in each theta piece's local variable
@@ -276,7 +257,7 @@ class KsSeries:
         # monomials in x (well conditioned on a short piece: they fall off like a Taylor series)
         mag = np.abs(c).max(axis=2)
         deg = int(np.flatnonzero(np.any(mag > 1e-14 * mag.max(axis=0), axis=1)).max()) + 1
-        self.rows = _cheb_to_monomial(deg) @ c[:deg].reshape(deg, -1)  # [power, piece * rate]
+        self.rows = cheb_to_monomial(deg) @ c[:deg].reshape(deg, -1)  # [power, piece * rate]
         self.base = np.concatenate([np.zeros(N_PIECES * n), np.tile(k_pi, N_PIECES)])  # per row
 
     def at(self, th, iv):

@@ -1,0 +1,306 @@
+"""Fast force-free end of contact (the grains' reading of Eq. 10, :mod:`.force_end`):
+Chebyshev tables in lambda and time, evaluated with numpy.
+
+The tables (``generated/exact_force_table.py``, built offline by
+:mod:`zener_sym.exact.force_table_build` from ``force_end.solve`` at rtol 1e-13) cover
+``LAM_MIN <= lambda <= LAM_MAX`` (0 to 1000) for the summary and the history; they are never
+extrapolated. Error bounds as the plate's (:mod:`.table`): ``SUMMARY_RTOL`` relative on every
+summary field, ``HISTORY_ATOL`` of each history field's scale (delta_m, F_m, 1 for the velocity
+and the impulse), against the mpmath path (``force_end.solve_mp``) between the nodes
+(tests/test_exact_force_table.py).
+"""
+from __future__ import annotations
+
+import functools
+import importlib
+
+import numpy as np
+
+from ..numerics.blocks import BLOCK, field_buffers
+from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
+from . import solver as _solver
+from .force_table_layout import ForceLayout, piece_variable, recovery_z_end
+from .table_layout import parse_array
+
+__all__ = ["LAM_MIN", "LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range", "summary",
+           "summary_derivative", "log_quantity", "history"]
+
+#: LAM_MIN and LAM_MAX (the tables' range) are read from the generated table on first use
+#: (``__getattr__``), the one source of the layout (as :mod:`.table`'s).
+_RANGE = ("LAM_MIN", "LAM_MAX")
+#: Documented (and tested) relative error bound of every summary field.
+SUMMARY_RTOL = 1e-11
+#: Documented (and tested) error bound of the history, relative to each field's scale.
+HISTORY_ATOL = 1e-10
+
+
+def _pad(mats) -> np.ndarray:
+    """One zero-padded array [lambda piece, field, degree] from per-piece coefficient tuples."""
+    n_f = len(mats[0])
+    deg = max(len(c) for m in mats for c in m)
+    out = np.zeros((len(mats), n_f, deg))
+    for p, m in enumerate(mats):
+        for f, c in enumerate(m):
+            out[p, f, : len(c)] = c
+    return out
+
+
+def __getattr__(name):
+    if name in _RANGE:
+        edges = _tables()["edges"]
+        return float(edges[0] if name == "LAM_MIN" else edges[-1])
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+@functools.cache
+def _tables():
+    """The generated table, loaded on first use; its layout is read from it."""
+    t = importlib.import_module("zener_sym.generated.exact_force_table")
+    lay = ForceLayout.of(t)
+    edges = np.asarray(lay.LAM_PIECES, dtype=float)
+    log = edges[:-1] >= lay.LOG_FROM
+    summary = _pad([[t.SUMMARY[k][p] for k in lay.SUMMARY_KEYS] for p in range(len(log))])
+    return {"layout": lay, "edges": edges, "log": log, "ga": piece_variable(edges[:-1], log),
+            "gb": piece_variable(edges[1:], log), "summary": summary,
+            "dsummary": np.polynomial.chebyshev.chebder(summary, axis=2),
+            "history": {piece: _history_layout(t.HISTORY, lay, piece, len(log))
+                        for piece in lay.TIME_PIECES}}
+
+
+def _history_layout(history, lay, piece, n_lam):
+    """Per lambda piece, [time degree, lambda degree, 2 * sub-piece + field] (field 0: f,
+    1: v), the time direction converted to monomials in the sub-piece's x (Horner's rule, as
+    the plate's ``table._history_layout``), so the lambda contraction gives per line the pairs
+    (f_j, v_j) read as one complex128 per sub-piece by ``horner_take_pair``."""
+    n_sub = lay.N_SUB[piece]
+    mats = {k: [[parse_array(c) for c in history[(piece, k)][p]] for p in range(n_lam)]
+            for k in lay.HISTORY_KEYS}
+    deg = max(c.shape[0] for k in mats for subs in mats[k] for c in subs)
+    n_k = max(c.shape[1] for k in mats for subs in mats[k] for c in subs)
+    conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
+    per = np.zeros((n_lam, deg, n_k, 2 * n_sub))
+    for p in range(n_lam):
+        for f, k in enumerate(lay.HISTORY_KEYS):
+            for s, c in enumerate(mats[k][p]):
+                a = np.zeros((deg, n_k))
+                a[: c.shape[0], : c.shape[1]] = c
+                per[p, :, :, 2 * s + f] = conv @ a
+    return per, n_sub, deg
+
+
+def in_range(lam) -> np.ndarray:
+    """Boolean mask: lambda inside the tables' range [LAM_MIN, LAM_MAX]."""
+    lam = np.asarray(lam, dtype=float)
+    edges = _tables()["edges"]
+    return (lam >= edges[0]) & (lam <= edges[-1])
+
+
+def _piece(lam: np.ndarray):
+    """Lambda piece index and the local Chebyshev variable x in [-1, 1]."""
+    if not np.all(in_range(lam)):
+        bad = float(lam[~in_range(lam)].ravel()[0])
+        t = _tables()
+        raise ValueError(f"lambda = {bad!r} is outside the force-end table's range "
+                         f"[{t['edges'][0]:g}, {t['edges'][-1]:g}]; integrate instead "
+                         f"(backend='scipy')")
+    t = _tables()
+    edges = t["edges"]
+    i = np.clip(np.searchsorted(edges, lam, side="right") - 1, 0, len(edges) - 2)
+    log = t["log"][i]
+    g = piece_variable(lam, log)
+    a, b = t["ga"][i], t["gb"][i]
+    return i, np.clip((2.0 * g - a - b) / (b - a), -1.0, 1.0)
+
+
+def _sum(tl, ci):
+    """sum_k tl[:, k] ci[:, :, k] in a fixed order (each lambda's value independent of the
+    others evaluated with it)."""
+    vals = tl[:, :1] * ci[:, :, 0]
+    for k in range(1, min(tl.shape[1], ci.shape[2])):
+        vals += tl[:, k:k + 1] * ci[:, :, k]
+    return vals
+
+
+def _core(lam: np.ndarray) -> dict:
+    i, x = _piece(lam)
+    c = _tables()["summary"]
+    tl = np.polynomial.chebyshev.chebvander(x, c.shape[2] - 1)
+    v = dict(zip(_tables()["layout"].SUMMARY_KEYS, _sum(tl, c[i]).T))
+    v["xi"] = lam * v["xi_over_lam"]
+    v["e"] = _solver.restitution(v["xi"], np.exp(v["log_e"]))
+    v["tau_d"] = np.exp(v["log_tau_d"])
+    return v, i, x, tl
+
+
+def summary(lam) -> dict:
+    """Every summary field of the force-free end (``models.SUMMARY_FIELDS``) for lambda in
+    [LAM_MIN, LAM_MAX]; xi from the solver's energy balance (never 1 - e^2), exactly 0 at
+    lambda = 0; e = sqrt(1 - xi) while xi < 1/2 (``solver.restitution``)."""
+    lam = np.asarray(lam, dtype=float)
+    shape = lam.shape
+    lam = lam.reshape(-1)
+    v, _, _, _ = _core(lam)
+    tau_dr = v["tau_d"] - v["tau_dc"]
+    out = {"lam": lam, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
+           "tau_dr": tau_dr, "eta": tau_dr / v["tau_dc"], "e": v["e"],
+           "F_m": np.exp(v["log_F_m"]), "impulse": 1.0 + v["e"],
+           "int_F2": np.exp(v["log_int_F2"]), "xi": v["xi"]}
+    return {k: a.reshape(shape) for k, a in out.items()}
+
+
+def _dscale(lam, i):
+    """dx/dlambda of each lambda's piece variable x: 2 / ((b - a) lambda) on ln-lambda pieces,
+    2 / ((b - a) 2 sqrt(lambda)) on sqrt pieces (infinite at lambda = 0)."""
+    t = _tables()
+    width = t["gb"][i] - t["ga"][i]
+    with np.errstate(divide="ignore"):
+        return np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)),
+                        1.0 / (width * np.sqrt(lam)))
+
+
+#: Summary fields :func:`summary_derivative` differentiates (as the plate table's).
+DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
+                     "int_F2", "xi")
+
+
+def summary_derivative(lam, field: str = "e") -> np.ndarray:
+    """d(field)/d(lambda) of the tabulated force-end summary from the series' own derivative
+    (``table.summary_derivative`` documents the contract). lambda must be > 0: near 0 the
+    fields have lambda^(3/2) terms and the tables' variable is sqrt(lambda)."""
+    if not isinstance(field, str) or field not in DERIVATIVE_FIELDS:
+        raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
+                         f"{', '.join(DERIVATIVE_FIELDS)}")
+    lam_in = np.asarray(lam, dtype=float)
+    lam = lam_in.reshape(-1)
+    if not np.all(np.isfinite(lam)):
+        raise ValueError("lambda must be finite")
+    if np.any(lam == 0.0):
+        raise ValueError("d/dlambda at lambda = 0 is not available for contact_end='force': the "
+                         "tables' variable is sqrt(lambda) (the fields have lambda^(3/2) terms, "
+                         "so their second derivative is infinite there); ask at lambda > 0")
+    v, i, x, _ = _core(lam)
+    d = _tables()["dsummary"]
+    tl = np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0))
+    keys = _tables()["layout"].SUMMARY_KEYS
+    dv = {k: c * _dscale(lam, i) for k, c in zip(keys, _sum(tl, d[i]).T)}
+    dxi = v["xi_over_lam"] + lam * dv["xi_over_lam"]
+    small = v["xi"] < 0.5
+    de = np.where(small, -dxi / (2.0 * v["e"]), v["e"] * dv["log_e"])
+    # where xi >= 1/2 the e route is the accurate one (xi' = -2 e e'), as the plate's
+    dxi = np.where(small, dxi, -2.0 * v["e"] * de)
+    tau_d = v["tau_d"]
+    dtau_d = tau_d * dv["log_tau_d"]
+    out = {"e": de, "impulse": de, "xi": dxi, "tau_d": dtau_d, "delta_m": dv["delta_m"],
+           "tau_dc": dv["tau_dc"], "tau_dr": dtau_d - dv["tau_dc"],
+           "eta": (dtau_d * v["tau_dc"] - tau_d * dv["tau_dc"]) / v["tau_dc"] ** 2,
+           "F_m": np.exp(v["log_F_m"]) * dv["log_F_m"],
+           "int_F2": np.exp(v["log_int_F2"]) * dv["log_int_F2"]}[field]
+    return out.reshape(lam_in.shape)
+
+
+def log_quantity(lam, quantity: str):
+    """(ln q, d ln q / d lambda) for q = e (ln e's series), xi (lambda > 0) or tau_d, for
+    :mod:`zener_sym.exact.inverse`."""
+    lam = np.asarray(lam, dtype=float).reshape(-1)
+    key = {"e": "log_e", "tau_d": "log_tau_d", "xi": "xi_over_lam"}.get(quantity)
+    if key is None:
+        raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
+    t = _tables()
+    k = t["layout"].SUMMARY_KEYS.index(key)
+    i, x = _piece(lam)
+    c, d = t["summary"][:, k, :], t["dsummary"][:, k, :]
+    tl = np.polynomial.chebyshev.chebvander(x, c.shape[1] - 1)
+    val = np.einsum("nk,nk->n", tl, c[i])
+    der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i]) * _dscale(lam, i)
+    if quantity == "xi":  # ln xi = ln lambda + ln(xi / lambda)
+        return np.log(lam) + np.log(val), 1.0 / lam + der / val
+    return val, der
+
+
+def _line_coefficients(per, ip, tl, deg, n_sub):
+    """[time degree, line * sub-piece] complex: the time piece's monomial coefficients per line
+    (real part f's, imaginary part v's), contracted in lambda."""
+    out = np.zeros((deg, len(ip), 2 * n_sub))
+    for p in np.unique(ip):
+        at = np.flatnonzero(ip == p)
+        c = per[int(p)]  # [deg, k, 2 n_sub]
+        out[:, at] = np.matmul(tl[at, : c.shape[1]], c)
+    return out.reshape(deg, -1).view(np.complex128)
+
+
+def history(lam, tau) -> dict:
+    """delta, velocity (delta'), force (F_c = sqrt(delta) (delta + (3/2) lambda delta')) and
+    impulse (1 - delta') at (lam, tau), of one broadcast shape; lambda in [LAM_MIN, LAM_MAX],
+    tau >= 0. Past tau_d: delta and the force 0, the velocity -e, the impulse 1 + e (as
+    ``force_end.ForceEndSolution.history``)."""
+    lam = np.asarray(lam, dtype=float)
+    tau = np.asarray(tau, dtype=float)
+    lam, tau = np.broadcast_arrays(lam, tau)
+    shape = tau.shape
+    if lam.ndim >= 1 and lam.shape[-1] > 1 and lam.strides[-1] == 0:
+        # one lambda per line of tau (a broadcast column): sort the lines, not every point
+        lu, line = np.unique(lam[..., 0].ravel(), return_inverse=True)
+        inv = np.repeat(line, lam.shape[-1])
+    else:
+        lu, inv = np.unique(lam.ravel(), return_inverse=True)
+    tau = tau.ravel()
+    v, ip, _, tl = _core(lu)
+    log = _tables()["log"][ip]
+    tau_dc, tau_d = v["tau_dc"], v["tau_d"]
+    tau_p = np.where(log, np.inf, np.exp(v["log_tau_p"]))  # the plate's tau_d (builder)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        # per line constants of the recovery map: y = a (1 - sqrt(b (tau_p - tau))) (sqrt
+        # pieces) or y = (tau - tau_dc) / (tau_d - tau_dc)
+        z_end = recovery_z_end(tau_dc, tau_d, tau_p)
+        r_a = np.where(log, 1.0 / (tau_d - tau_dc), 1.0 / (1.0 - z_end))
+        r_b = np.where(log, 0.0, 1.0 / (tau_p - tau_dc))
+        c_a = 1.0 / tau_dc
+    tables = _tables()["history"]
+    coef = {}
+    for name in _tables()["layout"].TIME_PIECES:
+        per, n_sub, deg = tables[name]
+        coef[name] = (_line_coefficients(per, ip, tl, deg, n_sub), n_sub)
+    out = field_buffers(("delta", "velocity", "force", "impulse"), tau.shape)
+    lam_1 = 1.5 * lu
+    e_end = v["e"]
+    for s0 in range(0, tau.size, BLOCK):
+        t = tau[s0:s0 + BLOCK]
+        li = inv[s0:s0 + BLOCK]
+        dc = tau_dc.take(li)
+        dd = tau_d.take(li)
+        delta = np.zeros(t.shape)
+        vel = -e_end.take(li)
+        comp = t <= dc
+        rec = ~comp & (t < dd)
+        for name, m in (("C", comp), ("R", rec)):
+            if not m.any():
+                continue
+            at = np.flatnonzero(m)
+            tt, ll = t[at], li[at]
+            rows, k = coef[name]
+            if name == "C":
+                y = np.sqrt(tt * c_a.take(ll))
+            else:
+                lg = log.take(ll)
+                # >= 0: at lambda = 0 tau_d and tau_P are the same time, each to rounding
+                gap = np.maximum(tau_p.take(ll) - tt, 0.0)
+                with np.errstate(invalid="ignore"):
+                    y_s = r_a.take(ll) * (1.0 - np.sqrt(np.where(lg, 0.0, gap) * r_b.take(ll)))
+                y = np.where(lg, (tt - dc[at]) * r_a.take(ll), y_s)
+            z = y * k
+            sub = np.minimum(np.maximum(z.astype(np.intp), 0), k - 1)
+            x = 2.0 * (z - sub) - 1.0
+            f, vv = horner_take_pair(rows, ll * k + sub, x)
+            g = np.exp(f)
+            if name == "C":
+                g *= tt
+            else:
+                g *= np.where(lg, 1.0, gap)
+            delta[at] = g
+            vel[at] = vv
+        sd = np.sqrt(delta)
+        out["delta"][s0:s0 + BLOCK] = delta
+        out["velocity"][s0:s0 + BLOCK] = vel
+        out["force"][s0:s0 + BLOCK] = sd * (delta + lam_1.take(li) * vel)
+        out["impulse"][s0:s0 + BLOCK] = 1.0 - vel
+    return {key: a.reshape(shape) for key, a in out.items()}

@@ -1,0 +1,210 @@
+"""Offline builder of the Chebyshev tables of the force-free end of contact
+(``generated/exact_force_table.py``), the grains' reading of Eq. (10) (:mod:`.force_end`).
+
+Built the way the plate's are (:mod:`.table_build`): the public results of
+:func:`zener_sym.exact.force_end.solve` (rtol 1e-13: summary fields, and ``history`` at the time
+nodes) are sampled at Chebyshev points of the first kind on each lambda piece of ``LAM_PIECES``
+and stored as Chebyshev coefficients, evaluated by :mod:`zener_sym.exact.force_table`.
+
+Lambda variable. The force-free end makes the summary go like powers of sqrt(lambda) near 0
+(``models.series``: e = sum a_j lambda^(j/2)), so the pieces below ``LOG_FROM`` use
+s = sqrt(lambda) as their Chebyshev variable (a series in lambda would converge like
+sqrt at 0); above, ln lambda as the plate's. xi is stored as xi / lambda (xi = 3.46 lambda +
+O(lambda^(3/2)) as lambda -> 0; stored as xi / sqrt(lambda) it lost its relative accuracy like
+sqrt(lambda), 1e-10 at lambda = 1e-12): xi = lambda (xi / lambda) keeps its relative accuracy
+down to lambda = 0, where it is exactly 0. xi comes from the solver's energy balance (never
+1 - e^2); e = sqrt(1 - xi) while xi < 1/2, as ``solver.restitution`` forms it.
+
+Time pieces of the history (the contact is the plate's trajectory cut at the force-free point
+tau_d; ``K`` = ``N_SUB`` equal sub-pieces of the reduced time y, each mapped onto [-1, 1]):
+
+``C`` compression, tau = tau_dc y^2 (as the plate's): delta = tau exp(f), v = delta'.
+``R`` recovery, tau_dc to tau_d. Below ``LOG_FROM`` the trajectory, continued past tau_d, reaches
+    delta = 0 at the plate's end of contact tau_P (``solver.solve``'s tau_d, stored as the
+    series ``log_tau_p``: 0 on the ln-lambda pieces, which do not use it), where delta is
+    analytic in sqrt(tau_P - tau); for small lambda tau_P lies only about 1.5 lambda past
+    tau_d. So tau = tau_P - (tau_P - tau_dc) z^2 with z linear in y, and delta =
+    (tau_P - tau) exp(f). Above, delta hardly recovers before the force vanishes (delta(tau_d)
+    > 0.9 delta_m): tau linear in y and delta = exp(f).
+
+The velocity v = delta' is tabulated itself (absolute accuracy); the force F_c =
+sqrt(delta) (delta + (3/2) lambda v) and the impulse 1 - v follow from (delta, v).
+
+The node values come from a floating-point integrator: ``zener-sym exact-table --check``
+rebuilds and compares numerically (``CHECK_RTOL``), as for the plate's.
+"""
+from __future__ import annotations
+
+import pathlib
+
+import numpy as np
+
+from ..codegen import inputs_hash
+from ..codegen.tables import table_module
+from ..numerics.chebyshev import cheb_coefficients, cheb_nodes, trim_trailing
+from . import table_build as _tb
+from .force_table_layout import ForceLayout, piece_variable, time_of
+
+__all__ = ["LAYOUT", "build_tables", "render", "compare", "input_files", "table_path"]
+
+#: Breakpoints of the lambda pieces (summary and history), [0, 1000].
+LAM_PIECES = (0.0, 0.25, 1.0, 2.0, 3.5, 5.0, 25.0, 150.0, 1000.0)
+#: Pieces starting at or above this lambda use ln(lambda) as their variable, below sqrt(lambda).
+LOG_FROM = 5.0
+#: Chebyshev points per lambda piece.
+N_LAM = 22
+#: Sub-pieces per time piece and Chebyshev points per sub-piece.
+N_SUB = {"C": 12, "R": 12}
+N_TIME = {"C": 10, "R": 12}
+#: Tolerance of the scipy solves at the nodes (force_end's default).
+RTOL = 1e-13
+#: Trimming, rounding and ``--check`` tolerance: the plate builder's (:mod:`.table_build`).
+TRIM = _tb.TRIM
+HISTORY_TRIM = _tb.HISTORY_TRIM
+HISTORY_QUANTUM = _tb.HISTORY_QUANTUM
+CHECK_RTOL = _tb.CHECK_RTOL
+
+SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m", "log_int_F2",
+                "log_tau_p")
+#: The layout written into the generated table (the runtime reads it back from there).
+LAYOUT = ForceLayout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, N_SUB=N_SUB,
+                     SUMMARY_KEYS=SUMMARY_KEYS)
+HISTORY_KEYS = LAYOUT.HISTORY_KEYS
+TIME_PIECES = LAYOUT.TIME_PIECES
+
+
+def is_log_piece(a: float) -> bool:
+    """True for a lambda piece [a, b] tabulated in ln(lambda) (else in sqrt(lambda))."""
+    return a >= LOG_FROM
+
+
+def piece_nodes(a: float, b: float) -> np.ndarray:
+    """The lambda nodes of the piece [a, b]: Chebyshev points in its variable."""
+    x = cheb_nodes(N_LAM)
+    ga, gb = (float(piece_variable(v, is_log_piece(a))) for v in (a, b))
+    g = ga + (gb - ga) * (x + 1.0) / 2.0
+    return np.exp(g) if is_log_piece(a) else g * g
+
+
+def sub_nodes(piece: str) -> np.ndarray:
+    """Reduced times y of the Chebyshev points of every sub-piece of a time piece, [sub, point]."""
+    k, x = N_SUB[piece], cheb_nodes(N_TIME[piece])
+    return (np.arange(k)[:, None] + (x[None, :] + 1.0) / 2.0) / k
+
+
+def node_data(lam: float, log_piece: bool) -> dict:
+    """Summary values and history samples of one lambda > 0, from ``force_end.solve``."""
+    from . import force_end, solver
+
+    s = force_end.solve(lam, rtol=RTOL)
+    # the plate's end of contact, the recovery map's anchor (unused on the ln-lambda pieces)
+    tau_p = np.inf if log_piece else float(solver.solve(lam, rtol=RTOL).tau_d)
+    out = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
+           "log_e": np.log(s.e), "xi_over_lam": s.xi / lam, "log_F_m": np.log(s.F_m),
+           "log_int_F2": np.log(s.int_F2), "log_tau_p": 0.0 if log_piece else np.log(tau_p)}
+    for piece in TIME_PIECES:
+        y = sub_nodes(piece)
+        tau = time_of(piece, y, s.tau_dc, s.tau_d, tau_p, log_piece)
+        h = s.history(tau.ravel())
+        d = np.asarray(h["delta"], dtype=float).reshape(y.shape)
+        v = np.asarray(h["velocity"], dtype=float).reshape(y.shape)
+        if piece == "C":
+            f = np.log(d / tau)
+        elif log_piece:
+            f = np.log(d)
+        else:
+            f = np.log(d / (tau_p - tau))
+        out[(piece, "f")] = f
+        out[(piece, "v")] = v
+        out[(piece, "delta")] = d.max(axis=1)  # per sub-piece: the weight of f's coefficients
+    return out
+
+
+def build_tables() -> dict:
+    """All coefficients, laid out as ``table_build.build_tables``' (summary per piece; history
+    per (time piece, field), per lambda piece, per sub-piece one [time degree, lambda degree]
+    matrix)."""
+    summary = {k: [] for k in SUMMARY_KEYS}
+    history = {(p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
+    weights = {key: [] for key in history}
+    for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:]):
+        data = [node_data(float(x), is_log_piece(a)) for x in piece_nodes(a, b)]
+        for k in SUMMARY_KEYS:
+            c = cheb_coefficients(np.array([d[k] for d in data]))
+            summary[k].append(trim_trailing(c, np.abs(c) > TRIM * np.abs(c).max()))
+        for key in history:
+            vals = np.array([d[key] for d in data])  # [lambda node, sub, time node]
+            c = cheb_coefficients(cheb_coefficients(vals, axis=2), axis=0)
+            if key[1] == "f":  # c moves delta by c delta: weighed by delta / delta_m
+                wt = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
+            else:
+                wt = np.ones(c.shape[1])
+            # drop trailing rows/columns that move the field by less than HISTORY_TRIM
+            history[key].append(tuple(trim_trailing(c[:, j, :].T, np.abs(c[:, j, :].T) * wt[j]
+                                                    > HISTORY_TRIM) for j in range(c.shape[1])))
+            weights[key].append(tuple(float(x) for x in wt))
+    return {"summary": summary, "history": history, "weights": weights}
+
+
+def input_files() -> list[pathlib.Path]:
+    """The sources the table is built from (its inputs hash): this builder, the layout it
+    writes and the solvers it samples."""
+    here = pathlib.Path(__file__).resolve().parent
+    return [here / name for name in ("force_table_build.py", "force_table_layout.py",
+                                     "force_end.py", "solver.py")]
+
+
+def render(tables: dict | None = None) -> str:
+    """Text of ``generated/exact_force_table.py``."""
+    import scipy
+
+    t = build_tables() if tables is None else tables
+    lines = ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads it back)",
+             *LAYOUT.assignments(), "",
+             "#: stored series -> one tuple of Chebyshev coefficients per lambda piece",
+             "SUMMARY = {"]
+    for k in SUMMARY_KEYS:
+        lines.append(f"    {k!r}: (")
+        for c in t["summary"][k]:
+            lines.append("        " + _tb._fmt(c, "        ") + ",")
+        lines.append("    ),")
+    lines += ["}", "",
+              "#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
+              "#: [time degree][lambda degree] as the string \"rows cols values...\"",
+              "#: (table_layout.parse_array)",
+              "HISTORY = {"]
+    for key in sorted(t["history"]):
+        lines.append(f"    {key!r}: (")
+        for subs, wts in zip(t["history"][key], t["weights"][key]):
+            lines.append("        (")
+            for c, wt in zip(subs, wts):
+                lines.append(f"            {_tb._fmt_q(c, HISTORY_QUANTUM / wt)!r},")
+            lines.append("        ),")
+        lines.append("    ),")
+    lines += ["}"]
+    title = ("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
+             f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}.")
+    provenance = (f"Built by zener_sym.exact.force_table_build from scipy {scipy.__version__} "
+                  f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym exact-table "
+                  "--check` rebuilds and compares numerically.")
+    return table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
+
+
+def table_path() -> pathlib.Path:
+    from ..codegen import generated_dir
+
+    return generated_dir() / "exact_force_table.py"
+
+
+def compare(stored: dict, fresh: dict) -> list[str]:
+    """Differences beyond CHECK_RTOL between two tables (``table_build.compare``'s rule); the
+    anchor series ``log_tau_p`` is compared on the sqrt(lambda) pieces only (it is 0 on the
+    others, where a relative difference is 0/0)."""
+    n = sum(not is_log_piece(a) for a in LAM_PIECES[:-1])
+
+    def sqrt_pieces_only(t):
+        summary = dict(t["summary"])
+        summary["log_tau_p"] = tuple(summary["log_tau_p"])[:n]
+        return {**t, "summary": summary}
+
+    return _tb.compare(sqrt_pieces_only(stored), sqrt_pieces_only(fresh))

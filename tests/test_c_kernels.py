@@ -213,6 +213,25 @@ def test_exact_history_pointwise_relative(lib):
         np.testing.assert_allclose(c["impulse"], py.impulse, rtol=1e-14, atol=0)
 
 
+def test_force_end_summary_matches_python(lib):
+    """ZS_FORCE summaries against the force-free end's tables in Python (same coefficients), and
+    the inverse at that end against zs.lam_for."""
+    api = PY["api"]
+    try:
+        api.summary(1.0, model="exact", contact_end="force", backend="table")
+    except ValueError as exc:
+        pytest.skip(f"this tree has no force-free-end tables ({exc})")
+    for lam in _lams() + [1e-12, 0.25, 0.01]:
+        rc, c = c_summary(lib, lam, 1)
+        assert rc == 0
+        py = api.summary(lam, model="exact", contact_end="force", backend="table")
+        for f in FIELDS:
+            assert c[f] == pytest.approx(float(getattr(py, f)), rel=1e-14, abs=1e-300), (lam, f)
+    for e in (1 - 1e-9, 0.9, 0.5, 0.1, 1e-3):
+        assert lib.zs_lam_for_e(e, 1) == pytest.approx(api.lam_for(e=e, contact_end="force"),
+                                                       rel=1e-12), e
+
+
 def test_lam_for_e_inverts_python_e(lib):
     """lambda(e) against brentq on the Python table's e(lambda), and the round trip."""
     from scipy.optimize import brentq
@@ -324,8 +343,14 @@ def test_edom_cases(lib):
         assert c_summary(lib, 1.0, end)[0] == 1
         assert c_history(lib, 1.0, tau_ok, end)[0] == 1
         assert math.isnan(lib.zs_lam_for_e(0.5, end))
-    # no force-free-end table yet: ZS_FORCE is refused, never answered wrongly
-    assert c_summary(lib, 1.0, 1)[0] == 1
+    # the force-free end: summaries from its tables, histories not in C yet (refused, never
+    # answered wrongly)
+    assert c_summary(lib, 1.0, 1)[0] == 0
+    rc, h = c_history(lib, 1.0, tau_ok, 1)
+    assert rc == 1 and all(_all_nan(v) for v in h.values())
+    for lam in (NAN, -1.0, 1001.0):
+        rc, s = c_summary(lib, lam, 1)
+        assert rc == 1 and _all_nan([s[f] for f in FIELDS if f != "lam"]), lam
     for tau in ([NAN], [-1.0], [1.0, float("inf")], [0.5, -0.0 - 1e-300]):
         rc, h = c_history(lib, 1.0, np.array(tau))
         assert rc == 1 and all(_all_nan(v) for v in h.values()), tau

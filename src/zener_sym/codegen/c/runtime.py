@@ -45,7 +45,8 @@ typedef struct {
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
    model "exact", backend "table": same coefficients). out must not be NULL.
-   Ends of contact with tables in this build: @ENDS@. */
+   Ends of contact with tables in this build: @ENDS@; summaries (and zs_lam_for_e) also
+   for @FENDS@ (its histories return ZS_EDOM in this version). */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
 /* Exact history at n times tau[i] (finite, >= 0): compression delta, relative velocity
@@ -86,6 +87,8 @@ TYPES = r'''#include <math.h>
 #define ZS__MAX_LAMDEG @MAX_LAMDEG@
 #define ZS__MAX_SUM @MAX_SUM@
 #define ZS__MAX_H1 @MAX_H1@
+#define ZS__MAX_FSUM @MAX_FSUM@
+#define ZS__NFSUM 7  /* delta_m, tau_dc, log_tau_d, log_e, xi_over_lam, log_F_m, log_int_F2 */
 #define ZS__BLOCK 256 /* points per block of a history */
 #define ZS__NSUM 6   /* delta_m, tau_dc, log_tau_d, log_e, int_F2, rest_over_lam */
 
@@ -100,6 +103,17 @@ typedef struct {
     int n_sub;
     const zs__mat *f, *I;
 } zs__tpiece;
+
+/* the summary of a force-free-end table (generated/exact_force_table.py): Chebyshev variable
+   sqrt(lambda) below LOG_FROM, ln lambda above */
+typedef struct {
+    int n_lam;
+    const double *edges, *ga, *gb;
+    const int *log_piece;
+    double lam_min, lam_max;
+    const double *const *sum;   /* [piece * ZS__NFSUM + field] */
+    const int *sum_len;
+} zs__force_table;
 
 /* an exact table (the layout of generated/exact_table.py) */
 typedef struct {
@@ -202,6 +216,51 @@ static void zs__core(const zs__exact_table *t, double lam, int history, zs__core
     c->tau_w0 = c->v[1] + lam * c->v[5];
 }
 
+static const zs__force_table *zs__force_table_of(int contact_end)
+{
+@FORCE_SWITCH@
+}
+
+/* the force-free end's summary fields of one lambda (exact.force_table._core) */
+static void zs__force_core(const zs__force_table *t, double lam, double v[ZS__NFSUM],
+                           double *e, double *xi)
+{
+    int i = -1, j, f, deg = 0;
+    double g, x, x2, T[ZS__MAX_FSUM];
+    for (j = 0; j <= t->n_lam; j++)
+        if (t->edges[j] <= lam)
+            i = j;
+    if (i < 0)
+        i = 0;
+    if (i > t->n_lam - 1)
+        i = t->n_lam - 1;
+    g = t->log_piece[i] ? log(lam) : sqrt(lam);
+    x = (2.0 * g - t->ga[i] - t->gb[i]) / (t->gb[i] - t->ga[i]);
+    if (x < -1.0)
+        x = -1.0;
+    if (x > 1.0)
+        x = 1.0;
+    for (f = 0; f < ZS__NFSUM; f++)
+        if (t->sum_len[i * ZS__NFSUM + f] > deg)
+            deg = t->sum_len[i * ZS__NFSUM + f];
+    T[0] = 1.0;
+    if (deg > 1)
+        T[1] = x;
+    x2 = 2.0 * x;
+    for (j = 2; j < deg; j++)
+        T[j] = T[j - 1] * x2 - T[j - 2];
+    for (f = 0; f < ZS__NFSUM; f++) {
+        const double *cf = t->sum[i * ZS__NFSUM + f];
+        int n = t->sum_len[i * ZS__NFSUM + f];
+        double s = T[0] * cf[0];
+        for (j = 1; j < n; j++)
+            s += T[j] * cf[j];
+        v[f] = s;
+    }
+    *xi = lam * v[4];
+    *e = *xi < 0.5 ? sqrt(1.0 - *xi > 0.0 ? 1.0 - *xi : 0.0) : exp(v[3]);
+}
+
 static int zs__contact_end_ok(int contact_end)
 {
     return contact_end == ZS_DELTA || contact_end == ZS_FORCE;
@@ -215,6 +274,27 @@ int zs_summary(double lam, int contact_end, zs_summary_t *out)
     if (out == NULL)
         return ZS_EDOM;
     t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
+    if (t == NULL && zs__contact_end_ok(contact_end) && zs__force_table_of(contact_end) != NULL) {
+        const zs__force_table *ft = zs__force_table_of(contact_end);
+        double v[ZS__NFSUM], e, xi;
+        if (!(lam >= ft->lam_min && lam <= ft->lam_max)) {
+            zs__summary_nan(lam, out);
+            return ZS_EDOM;
+        }
+        zs__force_core(ft, lam, v, &e, &xi);
+        out->lam = lam;
+        out->delta_m = v[0];
+        out->tau_dc = v[1];
+        out->tau_d = exp(v[2]);
+        out->tau_dr = out->tau_d - v[1];
+        out->eta = out->tau_dr / v[1];
+        out->e = e;
+        out->F_m = exp(v[5]);
+        out->impulse = 1.0 + e;
+        out->int_F2 = exp(v[6]);
+        out->xi = xi;
+        return ZS_OK;
+    }
     if (t == NULL || !(lam >= t->lam_min && lam <= t->lam_max)) {
         zs__summary_nan(lam, out);
         return ZS_EDOM;
@@ -440,11 +520,18 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
 /* the quantity the inverse solves for: xi = 2 lambda int_F2 (increasing) where the target's
    xi = 1 - e^2 is below 1/2, as e itself is formed there (exact.solver.restitution), so lambda
    keeps its relative accuracy as e -> 1; e (decreasing) below */
-static double zs__q_of(const zs__exact_table *t, double lam, int use_xi)
+static double zs__q_of(const zs__exact_table *t, const zs__force_table *ft, double lam,
+                       int use_xi)
 {
-    zs__core_t c;
-    zs__core(t, lam, 0, &c);
-    return use_xi ? 2.0 * lam * c.v[4] : -c.e;
+    if (t != NULL) {
+        zs__core_t c;
+        zs__core(t, lam, 0, &c);
+        return use_xi ? 2.0 * lam * c.v[4] : -c.e;
+    } else {
+        double v[ZS__NFSUM], e, xi;
+        zs__force_core(ft, lam, v, &e, &xi);
+        return use_xi ? xi : -e;
+    }
 }
 
 /* ordered 64-bit key of a double >= 0 (bisection on the representable numbers) */
@@ -465,29 +552,33 @@ static double zs__from_key(unsigned long long u)
 double zs_lam_for_e(double e, int contact_end)
 {
     const zs__exact_table *t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
+    const zs__force_table *ft = zs__contact_end_ok(contact_end) && t == NULL
+                                    ? zs__force_table_of(contact_end) : NULL;
     unsigned long long lo, hi;
-    double xi_t, q, q_top;
+    double xi_t, q, q_top, lam_min, lam_max;
     int use_xi;
-    if (t == NULL || !(e > 0.0 && e <= 1.0))
+    if ((t == NULL && ft == NULL) || !(e > 0.0 && e <= 1.0))
         return zs__nan();
+    lam_min = t != NULL ? t->lam_min : ft->lam_min;
+    lam_max = t != NULL ? t->lam_max : ft->lam_max;
     if (e == 1.0)
-        return t->lam_min;
+        return lam_min;
     xi_t = (1.0 - e) * (1.0 + e);
     use_xi = xi_t < 0.5;
     q = use_xi ? xi_t : -e;
     /* the target beyond the table's reach (e below e(ZS_LAM_MAX)) */
-    if (!(-e <= zs__q_of(t, t->lam_max, 0)))
+    if (!(-e <= zs__q_of(t, ft, lam_max, 0)))
         return zs__nan();
-    q_top = zs__q_of(t, t->lam_max, use_xi);
+    q_top = zs__q_of(t, ft, lam_max, use_xi);
     if (q >= q_top)
-        return t->lam_max;
+        return lam_max;
     /* q(lambda) increases: bisection over the doubles of [lam_min, lam_max] to the last ulp,
        keeping q(lo) < q <= q(hi); at most 64 steps */
-    lo = zs__key(t->lam_min);
-    hi = zs__key(t->lam_max);
+    lo = zs__key(lam_min);
+    hi = zs__key(lam_max);
     while (hi - lo > 1) {
         unsigned long long mid = lo + (hi - lo) / 2;
-        if (zs__q_of(t, zs__from_key(mid), use_xi) < q)
+        if (zs__q_of(t, ft, zs__from_key(mid), use_xi) < q)
             lo = mid;
         else
             hi = mid;
@@ -495,7 +586,7 @@ double zs_lam_for_e(double e, int contact_end)
     /* the nearer of the two neighbours */
     {
         double l0 = zs__from_key(lo), l1 = zs__from_key(hi);
-        return q - zs__q_of(t, l0, use_xi) < zs__q_of(t, l1, use_xi) - q ? l0 : l1;
+        return q - zs__q_of(t, ft, l0, use_xi) < zs__q_of(t, ft, l1, use_xi) - q ? l0 : l1;
     }
 }
 

@@ -160,3 +160,46 @@ def ham1_table_c(ns: dict) -> tuple[str, int]:
     out.append(f"static const int zs__h1_len[{len(lens)}] = {{{', '.join(lens)}}};\n")
     out.append(f"#define ZS__H1_PIECES {n}\n#define ZS__H1_TOP {num(float(pieces[-1][2]))}\n\n")
     return "".join(out), deg
+
+
+#: Summary fields of a force-free-end table the C code reads (zs__F_* order).
+FORCE_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m",
+                      "log_int_F2")
+
+
+def force_summary_c(name: str, ns: dict) -> tuple[str, int]:
+    """C text defining ``static const zs__force_table zs__ftab_<name>`` (the summary of a
+    force-free-end table: sqrt(lambda) below LOG_FROM, ln lambda above), and its largest degree."""
+    keys = tuple(ns.get("SUMMARY_KEYS", ()))
+    missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
+    if missing:
+        raise ValueError(f"force table {name}: summary keys {missing} missing")
+    edges = [float(x) for x in ns["LAM_PIECES"]]
+    n_lam = len(edges) - 1
+    log_from = float(ns["LOG_FROM"])
+    log = [a >= log_from for a in edges[:-1]]
+
+    def var(x, lg):
+        return _log_rounded(x) if lg else math.sqrt(x)
+
+    ga = [var(a, lg) for a, lg in zip(edges[:-1], log)]
+    gb = [var(b, lg) for b, lg in zip(edges[1:], log)]
+    p = f"zs__f{name}"
+    out = [f"/* ---- force-free-end summary table '{name}' ---- */\n",
+           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
+    ptrs, lens, deg = [], [], 2
+    for ip in range(n_lam):
+        for key in FORCE_SUMMARY_KEYS:
+            c = ns["SUMMARY"][key][ip]
+            out.append(_array(f"{p}_s{ip}_{key}", c))
+            ptrs.append(f"{p}_s{ip}_{key}")
+            lens.append(str(len(c)))
+            deg = max(deg, len(c))
+    logs = ", ".join("1" if lg else "0" for lg in log)
+    out.append(f"static const double *const {p}_sum[{len(ptrs)}] = {{{', '.join(ptrs)}}};\n"
+               f"static const int {p}_sum_len[{len(lens)}] = {{{', '.join(lens)}}};\n"
+               f"static const int {p}_log[{n_lam}] = {{{logs}}};\n"
+               f"static const zs__force_table zs__ftab_{name} = {{\n"
+               f"    {n_lam}, {p}_edges, {p}_ga, {p}_gb, {p}_log, {num(edges[0])}, "
+               f"{num(edges[-1])}, {p}_sum, {p}_sum_len\n}};\n\n")
+    return "".join(out), deg

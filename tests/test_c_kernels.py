@@ -455,6 +455,12 @@ def test_dem_wall_example_converges_at_second_order(tmp_path):
         assert abs(t - t_zs) / t_zs < 10.0 / steps**2
     err = {n: abs(v[1] - v[2]) for n, v in rows.items()}
     assert 3.5 < err[200] / err[400] < 4.6, err
+    # the grain reading (force never attractive, contact ends at its zero) against the
+    # force-free end's summary: an independent check of ZS_FORCE
+    r = subprocess.run([str(exe), "400", "force"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    v = [float(x) for x in r.stdout.strip().splitlines()[-1].split()]
+    assert abs(v[1] - v[2]) / v[2] < 10.0 / 400**2 and abs(v[4] - v[5]) / v[5] < 10.0 / 400**2
     # the Python summary at the example's lambda (printed first) agrees with the C one it used
     r = subprocess.run([str(exe), "200"], capture_output=True, text=True)
     lam = float(r.stdout.split()[1])

@@ -21,6 +21,9 @@ BUILDERS: list[tuple[str, str]] = [
     ("ham1_numpy.py", "zener_sym.codegen.ham:build_ham1_numpy"),
     ("ham0_mpmath.py", "zener_sym.codegen.ham:build_ham0_mpmath"),
     ("ham1_mpmath.py", "zener_sym.codegen.ham:build_ham1_mpmath"),
+    # C99 (codegen/c): the API header and the kernels with the exact and ham1 tables
+    ("c/zener_sym.h", "zener_sym.codegen.c:build_header"),
+    ("c/zener_sym.c", "zener_sym.codegen.c:build_source"),
 ]
 
 _PKG = pathlib.Path(__file__).resolve().parent.parent
@@ -101,6 +104,7 @@ def write(rendered: dict[str, str], folder: pathlib.Path) -> list[str]:
     for name, text in sorted(rendered.items()):
         path = folder / name
         if not path.exists() or path.read_text() != text:
+            path.parent.mkdir(parents=True, exist_ok=True)
             path.write_text(text)
             changed.append(name)
     return changed

@@ -1,0 +1,205 @@
+"""C data for the Chebyshev tables: the exact model's (``generated/exact_table.py`` layout) and
+the ham1 summary's (``generated/ham1_table.py``).
+
+The table modules are read as data (``runpy`` on the file in generated/, not imported: codegen
+sits below generated/ and must run when those files are stale). Every coefficient is written
+with the digits the Python file holds (the history's strings verbatim, the summary's floats by
+``repr``), so C and numpy evaluate the same numbers.
+
+``exact_table_c(name, ns)`` is generic over a table module with the exact table's layout
+(``LAM_PIECES``, ``LOG_FROM``, ``HISTORY_TO``, ``C_STRETCH``, ``C_END``, ``S_ORBIT``,
+``S_TRANSIENT``, ``N_SUB``, ``SUMMARY``, ``HISTORY``): another end of contact with its own table
+is one more entry in ``zener_sym.codegen.c.EXACT_TABLES``.
+"""
+from __future__ import annotations
+
+import math
+import runpy
+
+import mpmath
+
+#: Summary fields of an exact table, in the order the C code reads them (zs__S_* indices).
+EXACT_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest_over_lam")
+#: Time pieces of the history, in the C code's order.
+TIME_PIECES = ("C", "A", "M", "B")
+#: ham1 table fields, in the C code's order.
+HAM1_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
+
+
+def load(path) -> dict:
+    """A table module's globals, read from its file (not imported)."""
+    return runpy.run_path(str(path))
+
+
+def num(v) -> str:
+    """A float as a C literal that reads back to the same double."""
+    v = float(v)
+    if not math.isfinite(v):
+        raise ValueError(f"table value {v!r} is not finite")
+    s = repr(v)
+    return s if ("e" in s or "." in s) else s + ".0"
+
+
+def _array(name, values, per_line=6) -> str:
+    vals = [v if isinstance(v, str) else num(v) for v in values]
+    if not vals:
+        vals = ["0.0"]
+    lines = [", ".join(vals[i:i + per_line]) for i in range(0, len(vals), per_line)]
+    return f"static const double {name}[{len(vals)}] = {{\n    " + ",\n    ".join(lines) + "\n};\n"
+
+
+def _log_rounded(x: float) -> float:
+    """ln x correctly rounded (mpmath), so the file does not depend on the machine's libm."""
+    with mpmath.workdps(40):
+        return float(mpmath.log(mpmath.mpf(x)))
+
+
+def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
+    """C text defining ``static const zs__exact_table zs__tab_<name>``, and its sizes."""
+    pieces = tuple(ns.get("TIME_PIECES", TIME_PIECES))
+    if pieces != TIME_PIECES or tuple(ns.get("HISTORY_KEYS", ("f", "I"))) != ("f", "I"):
+        raise ValueError(f"table {name}: time pieces {pieces}; the C runtime evaluates "
+                         f"{TIME_PIECES} with fields ('f', 'I') (add the new maps to "
+                         "codegen/c/runtime.py first)")
+    edges = [float(x) for x in ns["LAM_PIECES"]]
+    n_lam = len(edges) - 1
+    log_from = float(ns["LOG_FROM"])
+    hist_to = float(ns["HISTORY_TO"])
+    log = [a >= log_from for a in edges[:-1]]
+    ga = [_log_rounded(a) if lg else a for a, lg in zip(edges[:-1], log)]
+    gb = [_log_rounded(b) if lg else b for b, lg in zip(edges[1:], log)]
+    p = f"zs__{name}"
+    out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n",
+           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
+    # summary: per lambda piece, per field, its Chebyshev coefficients
+    sizes = {"max_lamdeg": 0, "max_rows": 0, "max_sub": 0, "max_sum": 0}
+    sum_ptr, sum_len = [], []
+    for ip in range(n_lam):
+        for key in EXACT_SUMMARY_KEYS:
+            c = ns["SUMMARY"][key][ip]
+            out.append(_array(f"{p}_s{ip}_{key}", c))
+            sum_ptr.append(f"{p}_s{ip}_{key}")
+            sum_len.append(str(len(c)))
+            sizes["max_sum"] = max(sizes["max_sum"], len(c))
+    out.append(f"static const double *const {p}_sum[{len(sum_ptr)}] = {{{', '.join(sum_ptr)}}};\n")
+    out.append(f"static const int {p}_sum_len[{len(sum_len)}] = {{{', '.join(sum_len)}}};\n")
+    # history: per time piece and field, per lambda piece and sub-piece, a [rows][cols] matrix
+    pieces_c = []
+    n_hist = sum(1 for b in edges[1:] if b <= hist_to)
+    for tp in TIME_PIECES:
+        n_sub = int(ns["N_SUB"][tp])
+        sizes["max_sub"] = max(sizes["max_sub"], n_sub)
+        mats = {}
+        for fld in ("f", "I"):
+            per = ns["HISTORY"][(tp, fld)]
+            entries = []
+            for ip in range(n_lam):
+                subs = per[ip] if ip < len(per) else ()
+                if not len(subs):
+                    entries.extend(["{0, 0, NULL}"] * n_sub)
+                    continue
+                if len(subs) != n_sub:
+                    raise ValueError(f"table {name}: piece {tp} has {len(subs)} sub-pieces, "
+                                     f"N_SUB says {n_sub}")
+                for s, text in enumerate(subs):
+                    parts = text.split()
+                    rows, cols = int(parts[0]), int(parts[1])
+                    vals = parts[2:]
+                    if len(vals) != rows * cols:
+                        raise ValueError(f"table {name}: malformed array {tp}/{fld}/{ip}/{s}")
+                    arr = f"{p}_{tp}{fld}_{ip}_{s}"
+                    out.append(_array(arr, [v if ("." in v or "e" in v) else v + ".0"
+                                            for v in vals], per_line=8))
+                    entries.append(f"{{{rows}, {cols}, {arr}}}")
+                    sizes["max_rows"] = max(sizes["max_rows"], rows)
+                    sizes["max_lamdeg"] = max(sizes["max_lamdeg"], cols)
+            mats[fld] = f"{p}_{tp}{fld}"
+            out.append(f"static const zs__mat {p}_{tp}{fld}[{len(entries)}] = {{\n    "
+                       + ",\n    ".join(entries) + "\n};\n")
+        pieces_c.append(f"{{{n_sub}, {mats['f']}, {mats['I']}}}")
+    logs = ", ".join("1" if lg else "0" for lg in log)
+    out.append(f"static const int {p}_log[{n_lam}] = {{{logs}}};\n")
+    for key in ("max_lamdeg", "max_sum"):
+        sizes[key] = max(sizes[key], 2)
+    out.append(
+        f"static const zs__exact_table zs__tab_{name} = {{\n"
+        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_log,\n"
+        f"    {num(edges[0])}, {num(edges[-1])}, {num(hist_to)},\n"
+        f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
+        f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"
+        f"    {p}_sum, {p}_sum_len,\n"
+        f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
+    return "".join(out), sizes
+
+
+def ham1_table_c(ns: dict) -> tuple[str, int]:
+    """C text of the ham1 summary table (``zs__h1_*``), and its largest degree."""
+    pieces = ns["PIECES"]
+    out = ["/* ---- ham1 summary table ---- */\n"]
+    kinds, starts, ga, gb, ptrs, lens = [], [], [], [], [], []
+    deg = 0
+    for ip, (kind, a, b) in enumerate(pieces):
+        a, b = float(a), float(b)
+        if kind not in ("lam", "sqrt"):
+            raise ValueError(f"ham1 table: unknown piece kind {kind!r}")
+        kinds.append("1" if kind == "sqrt" else "0")
+        starts.append(a)
+        # the Chebyshev variable's ends (ham.table_build.variable_ends)
+        ga.append(a if kind == "lam" else 0.0)
+        gb.append(b if kind == "lam" else math.sqrt(b - a))
+        for key in HAM1_KEYS:
+            c = ns["COEF"][key][ip]
+            out.append(_array(f"zs__h1_{ip}_{key}", c))
+            ptrs.append(f"zs__h1_{ip}_{key}")
+            lens.append(str(len(c)))
+            deg = max(deg, len(c))
+    n = len(pieces)
+    out.append(_array("zs__h1_start", starts) + _array("zs__h1_ga", ga) + _array("zs__h1_gb", gb))
+    out.append(f"static const int zs__h1_sqrt[{n}] = {{{', '.join(kinds)}}};\n")
+    out.append(f"static const double *const zs__h1_coef[{len(ptrs)}] = {{{', '.join(ptrs)}}};\n")
+    out.append(f"static const int zs__h1_len[{len(lens)}] = {{{', '.join(lens)}}};\n")
+    out.append(f"#define ZS__H1_PIECES {n}\n#define ZS__H1_TOP {num(float(pieces[-1][2]))}\n\n")
+    return "".join(out), deg
+
+
+#: Summary fields of a force-free-end table the C code reads (zs__F_* order).
+FORCE_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m",
+                      "log_int_F2")
+
+
+def force_summary_c(name: str, ns: dict) -> tuple[str, int]:
+    """C text defining ``static const zs__force_table zs__ftab_<name>`` (the summary of a
+    force-free-end table: sqrt(lambda) below LOG_FROM, ln lambda above), and its largest degree."""
+    keys = tuple(ns.get("SUMMARY_KEYS", ()))
+    missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
+    if missing:
+        raise ValueError(f"force table {name}: summary keys {missing} missing")
+    edges = [float(x) for x in ns["LAM_PIECES"]]
+    n_lam = len(edges) - 1
+    log_from = float(ns["LOG_FROM"])
+    log = [a >= log_from for a in edges[:-1]]
+
+    def var(x, lg):
+        return _log_rounded(x) if lg else math.sqrt(x)
+
+    ga = [var(a, lg) for a, lg in zip(edges[:-1], log)]
+    gb = [var(b, lg) for b, lg in zip(edges[1:], log)]
+    p = f"zs__f{name}"
+    out = [f"/* ---- force-free-end summary table '{name}' ---- */\n",
+           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
+    ptrs, lens, deg = [], [], 2
+    for ip in range(n_lam):
+        for key in FORCE_SUMMARY_KEYS:
+            c = ns["SUMMARY"][key][ip]
+            out.append(_array(f"{p}_s{ip}_{key}", c))
+            ptrs.append(f"{p}_s{ip}_{key}")
+            lens.append(str(len(c)))
+            deg = max(deg, len(c))
+    logs = ", ".join("1" if lg else "0" for lg in log)
+    out.append(f"static const double *const {p}_sum[{len(ptrs)}] = {{{', '.join(ptrs)}}};\n"
+               f"static const int {p}_sum_len[{len(lens)}] = {{{', '.join(lens)}}};\n"
+               f"static const int {p}_log[{n_lam}] = {{{logs}}};\n"
+               f"static const zs__force_table zs__ftab_{name} = {{\n"
+               f"    {n_lam}, {p}_edges, {p}_ga, {p}_gb, {p}_log, {num(edges[0])}, "
+               f"{num(edges[-1])}, {p}_sum, {p}_sum_len\n}};\n\n")
+    return "".join(out), deg

@@ -1,0 +1,479 @@
+"""The emitted C kernels (generated/c) against the Python package.
+
+The C library is compiled here with the strict flags of the issue (C99, -Wall -Wextra -Werror
+-pedantic; and as C++), once as a shared library called through ctypes, once with
+-fsanitize=address,undefined into a driver that runs every entry point. References:
+
+* exact summaries and histories: the exact model's table backend through the public api
+  (``zs.summary``/``zs.history``, ``backend="table"``): same coefficients, so within 1e-14
+  relative (histories: 1e-14 of the value, with a floor of 1e-14 of the field's scale where the
+  value is far below it), at every lambda-piece edge, random lambda in [0, 1000], and the ends
+  of every time piece with their neighbouring doubles;
+* the inverse: lambda from a bracketing root finder (scipy brentq) on the Python e(lambda) or
+  xi(lambda), and ``zs.lam_for`` where the tree has it;
+* ham0/ham1: the generated numpy kernels (quadrature) and the models' numpy histories, 1e-12.
+
+A missing compiler skips with that reason.
+"""
+from __future__ import annotations
+
+import ctypes
+import math
+import pathlib
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+C_DIR = ROOT / "generated" / "c"
+STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
+CC = shutil.which("gcc") or shutil.which("cc")
+CXX = shutil.which("g++")
+
+pytestmark = pytest.mark.skipif(CC is None, reason="no C compiler (gcc or cc) on PATH: the C "
+                                                   "kernels cannot be built here")
+
+
+# --- the Python side, imported in one place ---------------------------------------------------
+def _python():
+    """The Python references (one place: these imports may move). ``exact`` is the exact model's
+    table backend through the public api; ``table`` the generated table module, read as data
+    (piece ends, layout constants)."""
+    from zener_sym import api
+    from zener_sym.generated import exact_table
+
+    try:  # the numpy HAM kernels: a runtime around formula-only generated files (newer tree)
+        from zener_sym.ham.runtime_numpy import ham0 as ham0_numpy
+        from zener_sym.ham.runtime_numpy import ham1 as ham1_numpy
+    except ImportError:  # the generated modules themselves (this tree)
+        from zener_sym.generated import ham0_numpy, ham1_numpy
+
+    try:  # the Gauss-Jacobi rule of the first-order integrals (moving to zener_sym.numerics)
+        from zener_sym.numerics import sqrt_integrals as quadrature
+    except ImportError:
+        from zener_sym.ham import quadrature
+
+    def exact_summary(lam):
+        return api.summary(np.atleast_1d(lam), model="exact", backend="table")
+
+    def exact_history(lam, tau):
+        return api.history(lam, tau, model="exact", backend="table")
+
+    return {"api": api, "exact_summary": exact_summary, "exact_history": exact_history,
+            "table": exact_table, "ham0": ham0_numpy, "ham1": ham1_numpy,
+            "quadrature": quadrature}
+
+
+PY = _python()
+FIELDS = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2",
+          "xi")
+
+
+class Summary(ctypes.Structure):
+    _fields_ = [(f, ctypes.c_double) for f in FIELDS]
+
+
+def _compile(args, cwd):
+    r = subprocess.run(args, cwd=cwd, capture_output=True, text=True)
+    assert r.returncode == 0, f"{' '.join(args)} failed:\n{r.stderr}"
+    return r
+
+
+@pytest.fixture(scope="module")
+def lib(tmp_path_factory):
+    d = tmp_path_factory.mktemp("zs_c")
+    so = d / "libzener_sym.so"
+    _compile([CC, *STRICT, "-O2", "-fPIC", "-shared", str(C_DIR / "zener_sym.c"), "-o", str(so),
+              "-lm"], d)
+    L = ctypes.CDLL(str(so))
+    P = ctypes.POINTER(ctypes.c_double)
+    L.zs_summary.argtypes = [ctypes.c_double, ctypes.c_int, ctypes.POINTER(Summary)]
+    L.zs_history.argtypes = [ctypes.c_double, ctypes.c_int, ctypes.c_size_t, P, P, P, P, P]
+    L.zs_lam_for_e.argtypes = [ctypes.c_double, ctypes.c_int]
+    L.zs_lam_for_e.restype = ctypes.c_double
+    for f in ("zs_ham0_history", "zs_ham1_history"):
+        getattr(L, f).argtypes = [ctypes.c_double, ctypes.c_size_t, P, P, P]
+    L.zs_ham1_summary.argtypes = [ctypes.c_double, ctypes.POINTER(Summary)]
+    return L
+
+
+def _ptr(a):
+    return None if a is None else a.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+
+
+def c_summary(lib, lam, end=0, ham1=False):
+    s = Summary()
+    rc = lib.zs_ham1_summary(lam, ctypes.byref(s)) if ham1 else lib.zs_summary(lam, end,
+                                                                               ctypes.byref(s))
+    return rc, {f: getattr(s, f) for f in FIELDS}
+
+
+def c_history(lib, lam, tau, end=0):
+    tau = np.ascontiguousarray(tau, dtype=float)
+    out = {f: np.empty(tau.size) for f in ("delta", "velocity", "force", "impulse")}
+    rc = lib.zs_history(lam, end, tau.size, _ptr(tau), _ptr(out["delta"]), _ptr(out["velocity"]),
+                        _ptr(out["force"]), _ptr(out["impulse"]))
+    return rc, out
+
+
+def c_ham(lib, order, lam, tau):
+    tau = np.ascontiguousarray(tau, dtype=float)
+    d, f = np.empty(tau.size), np.empty(tau.size)
+    fn = lib.zs_ham0_history if order == 0 else lib.zs_ham1_history
+    return fn(lam, tau.size, _ptr(tau), _ptr(d), _ptr(f)), d, f
+
+
+# --- compilation -----------------------------------------------------------------------------
+def test_strict_c99_and_cxx(tmp_path):
+    """The header and the source compile clean with the strict flags, and as C++."""
+    src = tmp_path / "use.c"
+    src.write_text('#include "zener_sym.h"\nint main(void) { zs_summary_t s; '
+                   'return zs_summary(1.0, ZS_DELTA, &s); }\n')
+    _compile([CC, *STRICT, "-O2", "-I", str(C_DIR), str(src), str(C_DIR / "zener_sym.c"), "-o",
+              str(tmp_path / "use"), "-lm"], tmp_path)
+    if CXX is None:
+        pytest.skip("no C++ compiler (g++): the C++ build is not checked here")
+    _compile([CXX, "-Wall", "-Wextra", "-Werror", "-pedantic", "-O1", "-x", "c++", "-I",
+              str(C_DIR), str(src), "-x", "c++", str(C_DIR / "zener_sym.c"), "-o",
+              str(tmp_path / "use_cxx")], tmp_path)
+
+
+# --- exact model -----------------------------------------------------------------------------
+def _edges():
+    return [float(x) for x in PY["table"].LAM_PIECES]
+
+
+def _lams():
+    rng = np.random.default_rng(25)
+    return sorted(set(_edges()) | {float(x) for x in rng.uniform(0, 1000, 12)}
+                  | {float(x) for x in rng.uniform(0, 5, 6)} | {1e-9, 0.3, 4.999999})
+
+
+def test_exact_summary_matches_python(lib):
+    for lam in _lams():
+        rc, c = c_summary(lib, lam)
+        assert rc == 0
+        py = PY["exact_summary"](lam)
+        for f in FIELDS:
+            want = float(getattr(py, f)[0])
+            assert c[f] == pytest.approx(want, rel=1e-14, abs=1e-300), (lam, f)
+
+
+def _piece_times(lam):
+    """Times at the ends of every time piece (tau_dc; tau_s and tau_w0 of the recovery pieces;
+    tau_d), their neighbouring doubles and a grid over the contact. The ends are evaluated here
+    from the generated table's coefficients with numpy's chebval and the table's layout
+    constants (tau_w0 = tau_dc + lambda rest_over_lam; above LOG_FROM tau_s = tau_dc + lambda
+    (S_ORBIT + S_TRANSIENT lambda^(-5/3)), table_build.split_time), not by the code under test."""
+    t = PY["table"]
+    edges = np.array(t.LAM_PIECES, dtype=float)
+    i = min(int(np.searchsorted(edges, lam, side="right")) - 1, len(edges) - 2)
+    a, b = edges[i], edges[i + 1]
+    log = a >= t.LOG_FROM
+    g, ga, gb = (np.log(lam), np.log(a), np.log(b)) if log else (lam, a, b)
+    x = np.clip((2 * g - ga - gb) / (gb - ga), -1, 1)
+    v = {k: float(np.polynomial.chebyshev.chebval(x, t.SUMMARY[k][i])) for k in t.SUMMARY}
+    tau_dc, tau_d = v["tau_dc"], float(np.exp(v["log_tau_d"]))
+    tau_w0 = tau_dc + lam * v["rest_over_lam"]
+    tau_s = (tau_dc + lam * (t.S_ORBIT + t.S_TRANSIENT * lam ** (-5 / 3))) if log else tau_w0
+    ends = [0.0, tau_dc, tau_s, tau_w0, tau_d]
+    pts = list(ends) + [np.nextafter(x, 0) for x in ends[1:]] + [np.nextafter(x, np.inf)
+                                                                  for x in ends]
+    pts += list(np.linspace(0, 1.05 * tau_d, 400))
+    return np.array(sorted(pts)), v
+
+
+def test_exact_history_matches_python(lib):
+    for lam in _lams():
+        tau, v = _piece_times(lam)
+        rc, c = c_history(lib, lam, tau)
+        assert rc == 0
+        py = PY["exact_history"](lam, tau)
+        dm = v["delta_m"]
+        scale = {"delta": dm, "force": dm**1.5, "impulse": 1.0, "velocity": 1.0}
+        for f, s in scale.items():
+            err = np.abs(c[f] - getattr(py, f))
+            # relative to the value where it is of the field's scale, to the scale near the
+            # zeros (tau = 0, tau_d), where the value is ill-conditioned for any evaluation
+            bad = err > 1e-14 * np.maximum(np.abs(getattr(py, f)), s)
+            assert not bad.any(), (lam, f, tau[bad][:3], c[f][bad][:3], getattr(py, f)[bad][:3])
+
+
+def test_exact_history_pointwise_relative(lib):
+    """delta relative pointwise (1e-14) away from the zeros at tau = 0 and tau_d."""
+    for lam in (0.0, 0.7, 3.0, 42.0, 1000.0):
+        tau, v = _piece_times(lam)
+        td = float(np.exp(v["log_tau_d"]))
+        tau = tau[(tau > 1e-3 * td) & (tau < 0.999 * td)]
+        _, c = c_history(lib, lam, tau)
+        py = PY["exact_history"](lam, tau)
+        np.testing.assert_allclose(c["delta"], py.delta, rtol=1e-14, atol=0)
+        np.testing.assert_allclose(c["impulse"], py.impulse, rtol=1e-14, atol=0)
+
+
+def test_force_end_summary_matches_python(lib):
+    """ZS_FORCE summaries against the force-free end's tables in Python (same coefficients), and
+    the inverse at that end against zs.lam_for."""
+    api = PY["api"]
+    try:
+        api.summary(1.0, model="exact", contact_end="force", backend="table")
+    except ValueError as exc:
+        pytest.skip(f"this tree has no force-free-end tables ({exc})")
+    for lam in _lams() + [1e-12, 0.25, 0.01]:
+        rc, c = c_summary(lib, lam, 1)
+        assert rc == 0
+        py = api.summary(lam, model="exact", contact_end="force", backend="table")
+        for f in FIELDS:
+            assert c[f] == pytest.approx(float(getattr(py, f)), rel=1e-14, abs=1e-300), (lam, f)
+    for e in (1 - 1e-9, 0.9, 0.5, 0.1, 1e-3):
+        assert lib.zs_lam_for_e(e, 1) == pytest.approx(api.lam_for(e=e, contact_end="force"),
+                                                       rel=1e-12), e
+
+
+def test_lam_for_e_inverts_python_e(lib):
+    """lambda(e) against brentq on the Python table's e(lambda), and the round trip."""
+    from scipy.optimize import brentq
+
+    e_of = lambda x: float(PY["exact_summary"](x).e[0])  # noqa: E731
+    xi_of = lambda x: float(PY["exact_summary"](x).xi[0])  # noqa: E731
+    for e in (1 - 1e-12, 0.999999, 0.999, 0.95, 0.8, 0.5, 0.2, 0.05, 1e-3, 1e-6):
+        lam = lib.zs_lam_for_e(e, 0)
+        xi = (1 - e) * (1 + e)
+        if xi < 0.5:  # near e = 1 lambda is conditioned by xi = 1 - e^2, not by e
+            ref = brentq(lambda x: xi_of(x) - xi, 0.0, 1000.0, xtol=1e-300, rtol=8.9e-16)
+            assert xi_of(lam) == pytest.approx(xi, rel=1e-14)
+        else:
+            ref = brentq(lambda x: e_of(x) - e, 0.0, 1000.0, xtol=1e-17, rtol=8.9e-16)
+            assert e_of(lam) == pytest.approx(e, rel=1e-14)
+        assert lam == pytest.approx(ref, rel=1e-12), e
+    assert lib.zs_lam_for_e(1.0, 0) == 0.0
+
+
+def test_lam_for_e_matches_python_inverse(lib):
+    """Against the package's own inverse (``zs.lam_for``, the exact tables' safeguarded Newton)
+    where this tree has it."""
+    lam_for = getattr(PY["api"], "lam_for", None)
+    if lam_for is None:
+        pytest.skip("zener_sym.api.lam_for is not in this tree (it comes with the inverse's "
+                    "branch); checked against brentq above")
+    for e in (1 - 1e-9, 0.99, 0.9, 0.7, 0.5, 0.3, 0.1, 0.01, 1e-5):
+        assert lib.zs_lam_for_e(e, 0) == pytest.approx(lam_for(e=e), rel=1e-12), e
+
+
+# --- HAM kernels -----------------------------------------------------------------------------
+def _ham_lams():
+    lc = PY["ham1"].LAM_CRIT
+    return [0.0, 0.1, 0.5, 1.0, 1.5, 2.0, 2.03, 2.2, 2.4, 0.999 * lc]
+
+
+def test_ham0_history_matches_numpy(lib):
+    h0 = PY["ham0"]
+    for lam in _ham_lams():
+        _, _, omega0 = h0.params(lam)
+        td = math.pi / float(omega0)
+        tau = np.concatenate([np.linspace(0, 1.1 * td, 300), [td, np.nextafter(td, 0)]])
+        rc, d, f = c_ham(lib, 0, lam, tau)
+        assert rc == 0
+        ref = np.where(tau < td, np.maximum(h0.delta(tau, lam), 0.0), 0.0)
+        np.testing.assert_allclose(d, ref, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(f, ref**1.5, rtol=1e-12, atol=1e-12)
+        m = PY["api"].history(lam, tau, model="ham0", fields=("delta", "force"))
+        np.testing.assert_allclose(d, m.delta, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(f, m.force, rtol=1e-12, atol=1e-12)
+
+
+def test_ham1_history_matches_numpy(lib):
+    h1 = PY["ham1"]
+    for lam in _ham_lams():
+        rc, s = c_summary(lib, lam, ham1=True)
+        td = s["tau_d"]
+        tau = np.concatenate([np.linspace(0, 1.1 * td, 120), [np.nextafter(td, 0)]])
+        rc, d, f = c_ham(lib, 1, lam, tau)
+        assert rc == 0
+        ref = np.where(tau < td, np.maximum(h1.delta(tau, lam), 0.0), 0.0)
+        np.testing.assert_allclose(d, ref, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(f, ref**1.5, rtol=1e-12, atol=1e-12)
+        m = PY["api"].history(lam, tau, model="ham1", fields=("delta", "force"))
+        np.testing.assert_allclose(d, m.delta, rtol=1e-12, atol=1e-12)
+
+
+def test_ham1_rule_is_the_numpy_kernels(lib):
+    """The C file's Gauss-Jacobi rule has the numpy kernels' size and cut (codegen cannot import
+    that helper, so it keeps its own copy of the two numbers)."""
+    text = (C_DIR / "zener_sym.c").read_text()
+    q = PY["quadrature"]
+    assert f"#define ZS__GJ_N {q.N_NODES}\n" in text
+    assert f"#define ZS__GJ_CUT {float(q.CUT)!r}\n" in text
+
+
+def test_ham1_summary_matches_python(lib):
+    for lam in _ham_lams() + list(np.random.default_rng(3).uniform(0, 2.44, 8)):
+        rc, c = c_summary(lib, float(lam), ham1=True)
+        assert rc == 0
+        py = PY["api"].summary(float(lam), model="ham1")
+        for f in FIELDS:
+            assert c[f] == pytest.approx(float(getattr(py, f)), rel=1e-12, abs=1e-300), (lam, f)
+    # against the root finding and quadrature of the numpy kernels (the tables' own accuracy)
+    k = PY["ham1"].summary(np.array([0.5, 1.7]))
+    for i, lam in enumerate((0.5, 1.7)):
+        _, c = c_summary(lib, lam, ham1=True)
+        for f in ("tau_dc", "tau_d", "e", "delta_m", "impulse", "int_F2"):
+            assert c[f] == pytest.approx(float(k[f][i]), rel=1e-11), (lam, f)
+
+
+# --- ZS_EDOM ---------------------------------------------------------------------------------
+NAN = float("nan")
+
+
+def _all_nan(values):
+    return all(math.isnan(v) for v in values)
+
+
+def test_edom_cases(lib):
+    lc = PY["ham1"].LAM_CRIT
+    tau_ok = np.array([0.0, 1.0])
+    for lam in (NAN, -1e-300, -1.0, 1000.0000000001, 1001.0, float("inf")):
+        rc, s = c_summary(lib, lam)
+        assert rc == 1 and _all_nan([s[f] for f in FIELDS if f != "lam"]), lam
+        rc, h = c_history(lib, lam, tau_ok)
+        assert rc == 1 and all(_all_nan(v) for v in h.values()), lam
+    for end in (-1, 2, 7):
+        assert c_summary(lib, 1.0, end)[0] == 1
+        assert c_history(lib, 1.0, tau_ok, end)[0] == 1
+        assert math.isnan(lib.zs_lam_for_e(0.5, end))
+    # the force-free end: summaries from its tables, histories not in C yet (refused, never
+    # answered wrongly)
+    assert c_summary(lib, 1.0, 1)[0] == 0
+    rc, h = c_history(lib, 1.0, tau_ok, 1)
+    assert rc == 1 and all(_all_nan(v) for v in h.values())
+    for lam in (NAN, -1.0, 1001.0):
+        rc, s = c_summary(lib, lam, 1)
+        assert rc == 1 and _all_nan([s[f] for f in FIELDS if f != "lam"]), lam
+    for tau in ([NAN], [-1.0], [1.0, float("inf")], [0.5, -0.0 - 1e-300]):
+        rc, h = c_history(lib, 1.0, np.array(tau))
+        assert rc == 1 and all(_all_nan(v) for v in h.values()), tau
+        for order in (0, 1):
+            rc, d, f = c_ham(lib, order, 1.0, np.array(tau))
+            assert rc == 1 and _all_nan(d) and _all_nan(f)
+    for lam in (NAN, -1.0, lc, np.nextafter(lc, 3), 3.0, 1001.0):
+        for order in (0, 1):
+            rc, d, f = c_ham(lib, order, lam, tau_ok)
+            assert rc == 1 and _all_nan(d) and _all_nan(f), (order, lam)
+        rc, s = c_summary(lib, lam, ham1=True)
+        assert rc == 1 and _all_nan([s[f] for f in FIELDS if f != "lam"])
+    for e in (NAN, 0.0, -0.1, 1.0 + 1e-15, 2.0, float("inf"), 1e-300):
+        assert math.isnan(lib.zs_lam_for_e(e, 0)), e
+    s = ctypes.POINTER(Summary)()
+    assert lib.zs_summary(1.0, 0, s) == 1 and lib.zs_ham1_summary(1.0, s) == 1  # NULL out
+    n = ctypes.POINTER(ctypes.c_double)()
+    assert lib.zs_history(1.0, 0, 3, n, n, n, n, n) == 1  # NULL tau with n > 0
+    assert lib.zs_history(1.0, 0, 0, n, n, n, n, n) == 0  # nothing to do
+
+
+# --- sanitizers ------------------------------------------------------------------------------
+DRIVER = r"""
+#include <math.h>
+#include <stdio.h>
+#include "zener_sym.h"
+
+int main(void)
+{
+    static const double lams[] = {0.0, 1e-9, 0.5, 1.0, 2.0, 3.5, 4.9, 5.0, 7.0, 10.0, 25.0,
+                                  80.0, 300.0, 999.0, 1000.0};
+    static const double bad[] = {-1.0, 1001.0, 1e308};
+    double tau[700], d[700], v[700], f[700], I[700];
+    zs_summary_t s;
+    size_t i, j, n = 700;
+    int rc = 0;
+    for (j = 0; j < sizeof lams / sizeof lams[0]; j++) {
+        rc |= zs_summary(lams[j], ZS_DELTA, &s);
+        for (i = 0; i < n; i++)
+            tau[i] = 1.1 * s.tau_d * (double)i / (double)(n - 1);
+        rc |= zs_history(lams[j], ZS_DELTA, n, tau, d, v, f, I);
+        rc |= zs_history(lams[j], ZS_DELTA, n, tau, NULL, NULL, f, NULL);
+        printf("%.17g %.17g %.17g %.17g\n", s.e, s.tau_d, d[n / 3], I[n / 2]);
+        printf("%.17g\n", zs_lam_for_e(s.e, ZS_DELTA));
+        if (lams[j] < ZS_LAM_CRIT) {
+            rc |= zs_ham0_history(lams[j], n, tau, d, f);
+            rc |= zs_ham1_history(lams[j], 60, tau, d, f);
+            rc |= zs_ham1_summary(lams[j], &s);
+            printf("%.17g %.17g\n", d[20], s.e);
+        }
+    }
+    if (rc != 0)
+        return 3;
+    for (j = 0; j < sizeof bad / sizeof bad[0]; j++) {
+        if (zs_summary(bad[j], ZS_DELTA, &s) != ZS_EDOM || !isnan(s.e))
+            return 4;
+        if (zs_history(bad[j], ZS_DELTA, n, tau, d, v, f, I) != ZS_EDOM || !isnan(d[0]))
+            return 5;
+        if (zs_ham1_history(bad[j], n, tau, d, f) != ZS_EDOM || !isnan(f[n - 1]))
+            return 6;
+    }
+    if (zs_summary(1.0, ZS_FORCE + 1, &s) != ZS_EDOM || !isnan(zs_lam_for_e(2.0, ZS_DELTA)))
+        return 7;
+    return 0;
+}
+"""
+
+
+def test_sanitized_driver(tmp_path, lib):
+    """Every entry point under -fsanitize=address,undefined (any report aborts the run), and the
+    values it prints equal the optimized library's."""
+    (tmp_path / "driver.c").write_text(DRIVER)
+    exe = tmp_path / "driver"
+    _compile([CC, *STRICT, "-O1", "-g", "-fsanitize=address,undefined",
+              "-fno-sanitize-recover=all", "-I", str(C_DIR), str(tmp_path / "driver.c"),
+              str(C_DIR / "zener_sym.c"), "-o", str(exe), "-lm"], tmp_path)
+    r = subprocess.run([str(exe)], capture_output=True, text=True,
+                       env={"ASAN_OPTIONS": "detect_leaks=1", "PATH": "/usr/bin:/bin"})
+    assert r.returncode == 0, f"sanitized driver failed ({r.returncode}):\n{r.stderr[-3000:]}"
+    assert "runtime error" not in r.stderr and "AddressSanitizer" not in r.stderr
+    first = [float(x) for x in r.stdout.split("\n")[0].split()]
+    _, s = c_summary(lib, 0.0)
+    assert first[:2] == pytest.approx([s["e"], s["tau_d"]], rel=1e-15)
+
+
+# --- the DEM example -------------------------------------------------------------------------
+def test_dem_wall_example_converges_at_second_order(tmp_path):
+    """examples/c/dem_wall.c: its velocity Verlet e and contact time against zs_summary's; the
+    error of e falls about 4x when dt halves (the stepper's O(dt^2)), the contact time's stays
+    within the same O(dt^2) bound."""
+    exe = tmp_path / "dem_wall"
+    _compile([CC, *STRICT, "-O2", "-I", str(C_DIR), str(ROOT / "examples" / "c" / "dem_wall.c"),
+              str(C_DIR / "zener_sym.c"), "-o", str(exe), "-lm"], tmp_path)
+    rows = {}
+    for steps in (200, 400):
+        r = subprocess.run([str(exe), str(steps)], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        vals = [float(x) for x in r.stdout.strip().splitlines()[-1].split()]
+        rows[steps] = vals
+        e, e_zs, t, t_zs = vals[1], vals[2], vals[4], vals[5]
+        assert abs(e - e_zs) / e_zs < 10.0 / steps**2
+        assert abs(t - t_zs) / t_zs < 10.0 / steps**2
+    err = {n: abs(v[1] - v[2]) for n, v in rows.items()}
+    assert 3.5 < err[200] / err[400] < 4.6, err
+    # the grain reading (force never attractive, contact ends at its zero) against the
+    # force-free end's summary: an independent check of ZS_FORCE
+    r = subprocess.run([str(exe), "400", "force"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    v = [float(x) for x in r.stdout.strip().splitlines()[-1].split()]
+    assert abs(v[1] - v[2]) / v[2] < 10.0 / 400**2 and abs(v[4] - v[5]) / v[5] < 10.0 / 400**2
+    # the Python summary at the example's lambda (printed first) agrees with the C one it used
+    r = subprocess.run([str(exe), "200"], capture_output=True, text=True)
+    lam = float(r.stdout.split()[1])
+    assert rows[200][2] == pytest.approx(float(PY["exact_summary"](lam).e[0]), rel=1e-5)
+
+
+def test_bench_driver_runs(tmp_path):
+    """The bench's timing driver builds against generated/c and reports its numbers (what it
+    measures is read by ``zener-sym bench``, not asserted here)."""
+    from zener_sym.bench import c_targets
+
+    exe = c_targets.compile_driver(tmp_path)
+    r = subprocess.run([str(exe), "3", "20", "5.0", "10", "1000.0", "3"], capture_output=True,
+                       text=True, check=True)
+    vals = [float(x) for x in r.stdout.split()]
+    assert len(vals) == 4 and all(v > 0 for v in vals[:3])

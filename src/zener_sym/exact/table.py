@@ -472,23 +472,8 @@ def history(lam, tau) -> dict:
     log = _tables()["log"][ip]
     lay = _tables()["layout"]
     tau_s = lay.split_time(lu, log, v["tau_dc"], v["tau_w0"])
-    # piece of each point: 0 C, 1 A, 2 M (empty for lambda <= LOG_FROM, tau_s = tau_w0), 3 B,
-    # 4 after the contact
-    # (1 + [tau >= tau_s] + [tau >= tau_w0] + [tau >= tau_d]) [tau > tau_dc]: the last factor
-    # keeps tau = tau_dc in C where the pieces between are empty (lambda = 0: all bounds equal)
-    bounds = (tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"])
-    if n_col is not None:  # per-line bounds broadcast along each line: no gather per point
-        t2 = tau.reshape(len(line), n_col)
-        b = [q[line, None] for q in bounds]
-    else:
-        t2 = tau
-        b = [q.take(inv, mode="clip") for q in bounds]
-    piece = (t2 >= b[0]).view(np.int8)
-    piece += t2 >= b[1]
-    piece += t2 >= b[2]
-    piece += 1
-    piece *= t2 > b[3]
-    piece = piece.ravel()
+    piece = _time_piece(tau, (tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"]),
+                        line if n_col is not None else inv, n_col)
     out = field_buffers(("delta", "impulse", "velocity", "force"), tau.shape)
     layout = _tables()["history"]
     tl_all = np.polynomial.chebyshev.chebvander(xl, max(
@@ -517,9 +502,36 @@ def history(lam, tau) -> dict:
                     out["delta"][at], out["impulse"][at] = _piece_values(
                         name, prep, tau.take(at, mode="clip"), li, lu)
         prep = None  # freed before the next piece's coefficients are made
-    for s in range(0, tau.size, _BLOCK):  # the derived fields, block by block (as above)
+    _derived_fields(out)
+    return {key: a.reshape(shape) for key, a in out.items()}
+
+
+def _time_piece(tau, bounds, index, n_col):
+    """The time piece of each point (int8, flat): 0 C, 1 A, 2 M (empty for lambda <= LOG_FROM,
+    tau_s = tau_w0), 3 B, 4 after the contact, from the bounds (tau_s, tau_w0, tau_d, tau_dc)
+    per distinct lambda; ``index`` maps lines (when ``n_col`` points share a lambda per line)
+    or points to their lambda."""
+    if n_col is not None:  # per-line bounds broadcast along each line: no gather per point
+        t2 = tau.reshape(len(index), n_col)
+        b = [q[index, None] for q in bounds]
+    else:
+        t2 = tau
+        b = [q.take(index, mode="clip") for q in bounds]
+    # (1 + [tau >= tau_s] + [tau >= tau_w0] + [tau >= tau_d]) [tau > tau_dc]: the last factor
+    # keeps tau = tau_dc in C where the pieces between are empty (lambda = 0: all bounds equal)
+    piece = (t2 >= b[0]).view(np.int8)
+    piece += t2 >= b[1]
+    piece += t2 >= b[2]
+    piece += 1
+    piece *= t2 > b[3]
+    return piece.ravel()
+
+
+def _derived_fields(out) -> None:
+    """force = delta^{3/2} and velocity = 1 - impulse, in place, block by block (per-point
+    temporaries stay cache-sized, as in ``history``)."""
+    for s in range(0, out["delta"].size, _BLOCK):
         d, f = out["delta"][s:s + _BLOCK], out["force"][s:s + _BLOCK]
         np.sqrt(d, out=f)
         f *= d
         np.subtract(1.0, out["impulse"][s:s + _BLOCK], out=out["velocity"][s:s + _BLOCK])
-    return {key: a.reshape(shape) for key, a in out.items()}

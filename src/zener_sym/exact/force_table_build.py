@@ -163,25 +163,10 @@ def render(tables: dict | None = None) -> str:
              *LAYOUT.assignments(), "",
              "#: stored series -> one tuple of Chebyshev coefficients per lambda piece",
              "SUMMARY = {"]
-    for k in SUMMARY_KEYS:
-        lines.append(f"    {k!r}: (")
-        for c in t["summary"][k]:
-            lines.append("        " + _tb._fmt(c, "        ") + ",")
-        lines.append("    ),")
-    lines += ["}", "",
-              "#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
-              "#: [time degree][lambda degree] as the string \"rows cols values...\"",
-              "#: (table_layout.parse_array)",
-              "HISTORY = {"]
-    for key in sorted(t["history"]):
-        lines.append(f"    {key!r}: (")
-        for subs, wts in zip(t["history"][key], t["weights"][key]):
-            lines.append("        (")
-            for c, wt in zip(subs, wts):
-                lines.append(f"            {_tb._fmt_q(c, HISTORY_QUANTUM / wt)!r},")
-            lines.append("        ),")
-        lines.append("    ),")
-    lines += ["}"]
+    lines += _tb.table_lines(t, SUMMARY_KEYS, (
+        "#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
+        "#: [time degree][lambda degree] as the string \"rows cols values...\"",
+        "#: (table_layout.parse_array)"))
     title = ("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
              f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}.")
     provenance = (f"Built by zener_sym.exact.force_table_build from scipy {scipy.__version__} "

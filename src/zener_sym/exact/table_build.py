@@ -375,6 +375,28 @@ def _fmt(a: np.ndarray, indent: str) -> str:
     return "(\n" + "\n".join(rows) + "\n" + indent + ")"
 
 
+def table_lines(t: dict, summary_keys, history_comment) -> list[str]:
+    """The SUMMARY and HISTORY assignments of a generated exact table (the plate's and the
+    force-free end's): summary series per lambda piece, history matrices per lambda piece and
+    sub-piece, quantised by their weights."""
+    lines = []
+    for k in summary_keys:
+        lines.append(f"    {k!r}: (")
+        for c in t["summary"][k]:
+            lines.append("        " + _fmt(c, "        ") + ",")
+        lines.append("    ),")
+    lines += ["}", "", *history_comment, "HISTORY = {"]
+    for key in sorted(t["history"]):
+        lines.append(f"    {key!r}: (")
+        for subs, wts in zip(t["history"][key], t["weights"][key]):
+            lines.append("        (")
+            for c, wt in zip(subs, wts):
+                lines.append(f"            {_fmt_q(c, HISTORY_QUANTUM / wt)!r},")
+            lines.append("        ),")
+        lines.append("    ),")
+    return lines + ["}"]
+
+
 def render(tables: dict | None = None) -> str:
     """Text of ``generated/exact_table.py``."""
     import scipy
@@ -384,25 +406,10 @@ def render(tables: dict | None = None) -> str:
              *LAYOUT.assignments(), "",
              "#: field -> one tuple of Chebyshev coefficients per lambda piece",
              "SUMMARY = {"]
-    for k in SUMMARY_KEYS:
-        lines.append(f"    {k!r}: (")
-        for c in t["summary"][k]:
-            lines.append("        " + _fmt(c, "        ") + ",")
-        lines.append("    ),")
-    lines += ["}", "",
-              "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
-              "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
-              "#: (table_layout.parse_array)",
-              "HISTORY = {"]
-    for key in sorted(t["history"]):
-        lines.append(f"    {key!r}: (")
-        for subs, wts in zip(t["history"][key], t["weights"][key]):
-            lines.append("        (")
-            for c, wt in zip(subs, wts):
-                lines.append(f"            {_fmt_q(c, HISTORY_QUANTUM / wt)!r},")
-            lines.append("        ),")
-        lines.append("    ),")
-    lines += ["}"]
+    lines += table_lines(t, SUMMARY_KEYS, (
+        "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
+        "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
+        "#: (table_layout.parse_array)"))
     title = ("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
              f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}.")
     provenance = (f"Built by zener_sym.exact.table_build from scipy {scipy.__version__} solves at "

@@ -1,13 +1,14 @@
-"""Builders of the HAM formula files in generated/: numpy and mpmath, orders 0 and 1.
+"""Builders of the HAM formula files in generated/: orders 0 and 1, printed once for every backend.
 
 A generated file holds printed formulas and data only: each function is one list of named
-outputs, printed by SymPy's code printers from the expressions of ``ham_exprs.ham_expressions()``
+outputs, printed by SymPy's numpy printer from the expressions of ``ham_exprs.ham_expressions()``
 (common subexpressions shared through ``sympy.cse``), with the arguments the expressions need and
-no check, loop or branch. One small template per file kind: the header, the imports the printed
-code calls (``numerics.elementary.p3`` and ``half_wave_sin`` for numpy, ``numerics.mp.p3_mp`` for
-mpmath), the data, the functions. The zeroth-order file of a backend holds what both orders
-share (k, beta, omega0, delta0, and for mpmath the 2F1 closed forms J), so no formula is printed
-twice in one backend.
+no check, loop or branch. Every function takes the math namespace ``xp`` first
+(``zener_sym.ham.xp``: numpy or mpmath), so a formula is printed once, not once per backend;
+rationals are printed as ``xp.rational(p, q)`` (the literal's double for numpy, exact at the
+working precision for mpmath). One small template per file kind: the header, the data, the
+functions; the files import nothing. The zeroth-order file holds what both orders share (k,
+beta, omega0, delta0, the 2F1 closed forms J), so no formula is printed twice.
 
 The hand-written runtime that wraps the formulas (input checks, broadcasting, the square-root
 integrals, root finding, contact integrals, mpmath precision and guard digits) is plain code in

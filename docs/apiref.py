@@ -43,7 +43,7 @@ MODULES = {
 }
 
 #: Generated kernels (``generated/``, emitted by ``zener-sym generate``; never edited by hand).
-GENERATED = ["ham0_numpy", "ham1_numpy", "ham0_mpmath", "ham1_mpmath"]
+GENERATED = ["ham0", "ham1"]
 
 _SKIP = {"__version__"}  # shown in the page text rather than as an object
 
@@ -100,8 +100,11 @@ def render(package) -> str:
         out += [f"   {n}" for n in sub.__all__] + [""]
     out += [_rule("Generated kernels (``zener_sym.generated``)", "-"),
             "Emitted from the SymPy derivation by ``zener-sym generate`` (do not edit; "
-            "``zener-sym generate --check`` fails when stale). The models call them; they are "
-            "public for users who want the bare closed forms.\n",
+            "``zener-sym generate --check`` fails when stale): the printed formulas only, each "
+            "function taking the math namespace ``xp`` first (``zener_sym.ham.xp.NUMPY`` or "
+            "``MPMATH``). The checked runtime around them (input checks, roots, integrals, "
+            "precision) is ``zener_sym.ham.runtime_numpy`` and ``runtime_mpmath``; the models "
+            "call that. They are public for users who want the bare closed forms.\n",
             ".. toctree::", "   :maxdepth: 1", ""]
     out += [f"   kernels/{m}" for m in GENERATED] + [""]
     return "\n".join(out)

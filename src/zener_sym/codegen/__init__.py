@@ -17,10 +17,8 @@ import sympy
 
 #: (file name in generated/, "module:function" returning the file's text)
 BUILDERS: list[tuple[str, str]] = [
-    ("ham0_numpy.py", "zener_sym.codegen.ham:build_ham0_numpy"),
-    ("ham1_numpy.py", "zener_sym.codegen.ham:build_ham1_numpy"),
-    ("ham0_mpmath.py", "zener_sym.codegen.ham:build_ham0_mpmath"),
-    ("ham1_mpmath.py", "zener_sym.codegen.ham:build_ham1_mpmath"),
+    ("ham0.py", "zener_sym.codegen.ham:build_ham0"),
+    ("ham1.py", "zener_sym.codegen.ham:build_ham1"),
     # C99 (codegen/c): the API header and the kernels with the exact and ham1 tables
     ("c/zener_sym.h", "zener_sym.codegen.c:build_header"),
     ("c/zener_sym.c", "zener_sym.codegen.c:build_source"),

@@ -1,13 +1,14 @@
-"""Builders of the HAM formula files in generated/: numpy and mpmath, orders 0 and 1.
+"""Builders of the HAM formula files in generated/: orders 0 and 1, printed once for every backend.
 
 A generated file holds printed formulas and data only: each function is one list of named
-outputs, printed by SymPy's code printers from the expressions of ``ham_exprs.ham_expressions()``
+outputs, printed by SymPy's numpy printer from the expressions of ``ham_exprs.ham_expressions()``
 (common subexpressions shared through ``sympy.cse``), with the arguments the expressions need and
-no check, loop or branch. One small template per file kind: the header, the imports the printed
-code calls (``numerics.elementary.p3`` and ``half_wave_sin`` for numpy, ``numerics.mp.p3_mp`` for
-mpmath), the data, the functions. The zeroth-order file of a backend holds what both orders
-share (k, beta, omega0, delta0, and for mpmath the 2F1 closed forms J), so no formula is printed
-twice in one backend.
+no check, loop or branch. Every function takes the math namespace ``xp`` first
+(``zener_sym.ham.xp``: numpy or mpmath), so a formula is printed once, not once per backend;
+rationals are printed as ``xp.rational(p, q)`` (the literal's double for numpy, exact at the
+working precision for mpmath). One small template per file kind: the header, the data, the
+functions; the files import nothing. The zeroth-order file holds what both orders share (k,
+beta, omega0, delta0, the 2F1 closed forms J), so no formula is printed twice.
 
 The hand-written runtime that wraps the formulas (input checks, broadcasting, the square-root
 integrals, root finding, contact integrals, mpmath precision and guard digits) is plain code in
@@ -19,47 +20,60 @@ from __future__ import annotations
 
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
-from sympy.printing.pycode import MpmathPrinter
 
 from . import header
 from .ham_exprs import REGISTRY_SOURCES
 from .ham_exprs import SYMBOLS as Y
 from .ham_exprs import ham_expressions
 
-__all__ = ["build_ham0_numpy", "build_ham1_numpy", "build_ham0_mpmath", "build_ham1_mpmath"]
+__all__ = ["build_ham0", "build_ham1"]
 
 _SOURCES = ("zener_sym.codegen.ham", "zener_sym.codegen.ham_exprs") + REGISTRY_SOURCES
 
 
-class _NumpyPrinter(NumPyPrinter):
+class _NeutralPrinter(NumPyPrinter):
+    """Prints for any math namespace ``xp`` given as the first argument of each function.
+
+    numpy's printing (so the numpy results keep their bits: ``x**(-1.0)``, float exponents),
+    every module name read as ``xp``, and each rational p/q as ``xp.rational(p, q)``: the numpy
+    namespace divides two ints (the same double as the literal p/q), the mpmath namespace gives
+    ``mpf(p)/q``, exact at the working precision."""
+
+    def _module_format(self, fqn, register=True):
+        return "xp." + fqn.split(".", 1)[1] if fqn.startswith("numpy.") else fqn
+
+    def _print_Rational(self, e):
+        return f"xp.rational({e.p}, {e.q})"
+
+    def _print_Half(self, e):
+        return self._print_Rational(e)
+
     def _print_P3(self, e):
-        return f"_p3({self._print(e.args[0])})"
+        return f"xp.p3({self._print(e.args[0])})"
 
     def _print_Atan2(self, e):
-        return f"numpy.arctan2({self._print(e.args[0])}, {self._print(e.args[1])})"
-
-
-class _HalfWavePrinter(_NumpyPrinter):
-    """For delta0 on its contact only: its one sine, of the phase omega0 tau, is printed as the
-    first half wave (``numerics.elementary.half_wave_sin``: sin on [0, pi], 0 beyond;
-    vectorized)."""
-
-    def _print_sin(self, e):
-        return f"_half_wave_sin({self._print(e.args[0])})"
-
-
-class _MpPrinter(MpmathPrinter):
-    def _print_P3(self, e):
-        return f"_p3({self._print(e.args[0])})"
-
-    def _print_Atan2(self, e):
-        return f"mpmath.atan2({self._print(e.args[0])}, {self._print(e.args[1])})"
+        return f"xp.atan2({self._print(e.args[0])}, {self._print(e.args[1])})"
 
     def _print_re(self, e):
-        return f"mpmath.re({self._print(e.args[0])})"
+        return f"xp.re({self._print(e.args[0])})"
 
     def _print_im(self, e):
-        return f"mpmath.im({self._print(e.args[0])})"
+        return f"xp.im({self._print(e.args[0])})"
+
+    def _print_gamma(self, e):
+        return f"xp.gamma({self._print(e.args[0])})"
+
+    def _print_hyper(self, e):
+        ap, bq = (self._print_seq(seq) for seq in (e.ap, e.bq))  # tuples, as mpmath.hyper takes
+        return f"xp.hyper({ap}, {bq}, {self._print(e.argument)})"
+
+
+class _HalfWavePrinter(_NeutralPrinter):
+    """For delta0 on its contact only: its one sine, of the phase omega0 tau, is printed as the
+    first half wave (``xp.half_wave_sin``: sin on [0, pi], 0 beyond)."""
+
+    def _print_sin(self, e):
+        return f"xp.half_wave_sin({self._print(e.args[0])})"
 
 
 def _block(printer, outputs, indent="    ", prefix="_x"):
@@ -82,7 +96,7 @@ def _function(printer, name, args, doc, outputs, returns=None, prefix="_x"):
             raise ValueError(f"{name}: output {out} needs {extra} beyond the arguments {args}")
         have.add(out)
     ret = returns or ", ".join(n for n, _ in outputs)
-    return (f"\n\ndef {name}({', '.join(map(str, args))}):\n    \"\"\"{doc}\"\"\"\n"
+    return (f"\n\ndef {name}({', '.join(('xp',) + tuple(map(str, args)))}):\n    \"\"\"{doc}\"\"\"\n"
             f"{_block(printer, outputs, prefix=prefix)}\n    return {ret}\n")
 
 
@@ -124,19 +138,23 @@ def _lam_crit_data(e, lam_crit, with_float):
     return "\n".join(lines) + "\n"
 
 
-def _zeroth(p, e, half_wave=None):
+def _zeroth(p, e):
     """The formulas both orders share: k, beta, omega0 (25, 32, 33), delta0 (35), delta0' (56),
-    and the zeroth-order closed forms (47, 54-61, 79)."""
+    delta0 on its contact (with ``xp.half_wave_sin``), the zeroth-order closed forms (47, 54-61,
+    79), and the 2F1 closed forms J of the square-root integrals (with ``xp.gamma``,
+    ``xp.hyper``: the mpmath namespace)."""
+    sines = e["delta0"].atoms(sp.sin)
+    if len(sines) != 1 or next(iter(sines)).args[0] != Y["omega0"] * Y["tau"]:
+        raise ValueError(f"delta_contact expects one sine of omega0*tau in delta0, got {sines}")
     text = _function(p, "params", ("lam",), "k (25), beta (32) and omega0 (33) of the "
                      "zeroth-order operator.", _params_outputs(e))
     text += _function(p, "delta0", _CONTACT, "Zeroth-order compression delta0 (35), continued "
                       "analytically (no clipping).", [("out", e["delta0"])], "out")
     text += _function(p, "delta0_dot", _CONTACT, "Zeroth-order relative velocity delta0' (56).",
                       [("out", e["delta0_dot"])], "out")
-    if half_wave is not None:
-        text += _function(half_wave, "delta_contact", _CONTACT, "delta0 (35) on the "
-                          "zeroth-order contact, its sine printed as the first half wave (0 "
-                          "after omega0 tau = pi, Eq. 54).", [("out", e["delta0"])], "out")
+    text += _function(_HalfWavePrinter(), "delta_contact", _CONTACT, "delta0 (35) on the "
+                      "zeroth-order contact, its sine printed as the first half wave (0 after "
+                      "omega0 tau = pi, Eq. 54).", [("out", e["delta0"])], "out")
     text += _function(p, "a_impulse", ("beta", "omega0"), "Decay rate a = 3 beta / (2 omega0) "
                       "of K_s in the impulse (47).", [("a_imp", e["a_impulse0"])])
     text += _function(p, "impulse", ("omega0", "Ks"), "Impulse (47) omega0^(-5/2) K_s from "
@@ -145,76 +163,53 @@ def _zeroth(p, e, half_wave=None):
                       "tau_dc (58), tau_dr (60), eta (61), e (79), delta_m = delta0(tau_dc), "
                       "int_F2, and the impulse's rate a_imp.", _summary0_outputs(e),
                       _SUMMARY0_RETURN)
+    text += _function(p, "J_pi", ("m", "a"), "J_m(a, pi) by Gauss's theorem (Gamma functions).",
+                      [("out", e["J_pi"])], "out")
+    text += _function(p, "J_theta", ("m", "a", "theta"), "J_m(a, theta) = int_0^theta "
+                      "exp((-a + i m) t) sqrt(sin t) dt by its 2F1 closed form, 0 < theta < pi.",
+                      [("out", e["J_theta"])], "out")
     return text
 
 
-def _first(p, e, numpy):
-    """The first-order formulas: delta1 (37-42), delta0 + delta1 and its derivative, with the
-    square-root integrals K_cc, K_sc, K_ss (36) as arguments; numpy also the scaled forms the
-    root finding uses."""
+def _first(p, e):
+    """The first-order formulas: delta1 (37-42), delta0 + delta1 and
+    its derivative, with the square-root integrals K_cc, K_sc, K_ss (36) as arguments, and the
+    scaled forms the numpy root finding uses."""
     d = e["delta0"] + e["delta1"]
     dd = e["delta0_dot"] + e["delta1_dot"]
     text = _function(p, "a_first", ("beta", "omega0"), "Decay rate a = beta / (2 omega0) of the "
                      "square-root integrals K (36).", [("a", e["a_first"])])
     text += _function(p, "delta1", _WITH_K, "First-order correction delta1 (37)-(42).",
                       [("out", e["delta1"])], "out")
+    # printed whole, not as delta0() + delta1(): that sum rounds differently (up to 4e-16 in
+    # delta, 5 ulp in F_m), and every number must keep its bits
     text += _function(p, "delta", _WITH_K, "First-order HAM compression delta0 + delta1 (42).",
                       [("out", d)], "out")
     text += _function(p, "delta_dot", _WITH_K, "d/dtau of delta0 + delta1 (the C' terms cancel "
                       "by Eq. 38).", [("out", dd)], "out")
-    if numpy:
-        text += _function(p, "delta_scaled", _WITH_K, "exp(beta tau) * (delta0 + delta1): same "
-                          "sign, no underflow.", [("out", _scaled(d))], "out")
-        text += _function(p, "delta_dot_scaled", _WITH_K, "exp(beta tau) * d/dtau (delta0 + "
-                          "delta1): same sign, no underflow.", [("out", _scaled(dd))], "out")
+    text += _function(p, "delta_scaled", _WITH_K, "exp(beta tau) * (delta0 + delta1): same "
+                      "sign, no underflow.", [("out", _scaled(d))], "out")
+    text += _function(p, "delta_dot_scaled", _WITH_K, "exp(beta tau) * d/dtau (delta0 + "
+                      "delta1): same sign, no underflow.", [("out", _scaled(dd))], "out")
     return text
 
 
-_NP_IMPORTS = "import numpy\n\nfrom zener_sym.numerics.elementary import p3 as _p3\n"
-
-
-def build_ham0_numpy() -> str:
-    """generated/ham0_numpy.py: zeroth-order formulas, float64 numpy."""
+def build_ham0() -> str:
+    """generated/ham0.py: the zeroth-order formulas and the 2F1 closed forms J, for any math
+    namespace ``xp``."""
     e, lam_crit = _common()
-    sines = e["delta0"].atoms(sp.sin)
-    if len(sines) != 1 or next(iter(sines)).args[0] != Y["omega0"] * Y["tau"]:
-        raise ValueError(f"delta_contact expects one sine of omega0*tau in delta0, got {sines}")
-    return (header(_SOURCES, "Zeroth-order HAM formulas of Zener's equation (10), numpy float64 "
-                   "(the runtime: zener_sym.ham.runtime_numpy).")
-            + "\nimport numpy\n\nfrom zener_sym.numerics.elementary import half_wave_sin as "
-            "_half_wave_sin\n\n"
-            + _lam_crit_data(e, lam_crit, True)
-            + _zeroth(_NumpyPrinter(), e, _HalfWavePrinter()))
+    return (header(_SOURCES, "Zeroth-order HAM formulas of Zener's equation (10), printed once "
+                   "for every backend: each function takes the math namespace xp first (the "
+                   "runtimes: zener_sym.ham.runtime_numpy, runtime_mpmath; the namespaces: "
+                   "zener_sym.ham.xp).")
+            + "\n" + _lam_crit_data(e, lam_crit, True) + _zeroth(_NeutralPrinter(), e))
 
 
-def build_ham1_numpy() -> str:
-    """generated/ham1_numpy.py: first-order formulas, float64 numpy."""
+def build_ham1() -> str:
+    """generated/ham1.py: the first-order formulas, for any math namespace ``xp``."""
     e, _ = _common()
-    return (header(_SOURCES, "First-order HAM formulas of Zener's equation (10), numpy float64 "
-                   "(the runtime: zener_sym.ham.runtime_numpy).")
-            + "\n" + _NP_IMPORTS + _first(_NumpyPrinter(), e, numpy=True))
-
-
-def build_ham0_mpmath() -> str:
-    """generated/ham0_mpmath.py: zeroth-order formulas and the 2F1 closed forms J, mpmath."""
-    e, lam_crit = _common()
-    p = _MpPrinter()
-    text = _zeroth(p, e)
-    text += _function(p, "J_pi", ("m", "a"), "J_m(a, pi) by Gauss's theorem (Gamma functions).",
-                      [("out", e["J_pi"])], "out")
-    text += _function(p, "J_theta", ("m", "a", "theta"), "J_m(a, theta) = int_0^theta "
-                      "exp((-a + i m) t) sqrt(sin t) dt by its 2F1 closed form, 0 < theta < pi.",
-                      [("out", e["J_theta"])], "out")
-    return (header(_SOURCES, "Zeroth-order HAM formulas of Zener's equation (10), mpmath (the "
-                   "runtime: zener_sym.ham.runtime_mpmath).")
-            + "\nimport mpmath\n\n"
-            + _lam_crit_data(e, lam_crit, False) + text)
-
-
-def build_ham1_mpmath() -> str:
-    """generated/ham1_mpmath.py: first-order formulas, mpmath."""
-    e, _ = _common()
-    return (header(_SOURCES, "First-order HAM formulas of Zener's equation (10), mpmath (the "
-                   "runtime: zener_sym.ham.runtime_mpmath).")
-            + "\nimport mpmath\n\nfrom zener_sym.numerics.mp import p3_mp as _p3\n"
-            + _first(_MpPrinter(), e, numpy=False))
+    return (header(_SOURCES, "First-order HAM formulas of Zener's equation (10), printed once "
+                   "for every backend: each function takes the math namespace xp first (the "
+                   "runtimes: zener_sym.ham.runtime_numpy, runtime_mpmath; the namespaces: "
+                   "zener_sym.ham.xp).")
+            + _first(_NeutralPrinter(), e))

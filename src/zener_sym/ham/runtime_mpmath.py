@@ -1,6 +1,6 @@
 """The mpmath HAM kernels: the hand-written runtime around the printed formulas.
 
-``generated/ham0_mpmath.py`` and ``generated/ham1_mpmath.py`` hold the formulas only; this module
+``generated/ham0.py`` and ``generated/ham1.py`` hold the formulas only; this module
 checks the inputs, sets the working precision (``dps`` digits if given, else the caller's
 ``mpmath.mp.dps``; 10 guard digits for the formulas, more for the square-root integrals near
 their ends), evaluates the square-root integrals K from the 2F1 closed forms J, finds the
@@ -19,9 +19,13 @@ import types
 
 import mpmath
 
-from ..generated import ham0_mpmath as _f0
-from ..generated import ham1_mpmath as _f1
+from ..generated import ham0 as _ham0
+from ..generated import ham1 as _ham1
 from ..numerics.mp import contact_integral_mp
+from .xp import MPMATH, bind
+
+_f0 = bind(_ham0, MPMATH)  # the formulas, printed once for every backend, on mpmath
+_f1 = bind(_ham1, MPMATH)
 
 __all__ = ["LAM_CRIT_DIGITS", "sqrt_integrals_mp", "ham0", "ham1"]
 

@@ -1,6 +1,6 @@
 """The numpy HAM kernels: the hand-written runtime around the printed formulas.
 
-``generated/ham0_numpy.py`` and ``generated/ham1_numpy.py`` hold the formulas only (SymPy's
+``generated/ham0.py`` and ``generated/ham1.py`` hold the formulas only (SymPy's
 printers, no checks); this module validates and broadcasts the inputs, computes k, beta,
 omega0 once per lambda, the square-root integrals K (Gauss-Jacobi quadrature,
 :mod:`zener_sym.numerics.sqrt_integrals`), the first-order roots (:func:`numerics.roots.first_root`)
@@ -22,11 +22,15 @@ import types
 
 import numpy
 
-from ..generated import ham0_numpy as _f0
-from ..generated import ham1_numpy as _f1
+from ..generated import ham0 as _ham0
+from ..generated import ham1 as _ham1
 from ..numerics.integrate import cumulative_integral
 from ..numerics.roots import first_root
 from ..numerics.sqrt_integrals import sqrt_integrals
+from .xp import NUMPY, bind
+
+_f0 = bind(_ham0, NUMPY)  # the formulas, printed once for every backend, on numpy
+_f1 = bind(_ham1, NUMPY)
 
 __all__ = ["LAM_CRIT", "LAM_CRIT_DIGITS", "ham0", "ham1"]
 

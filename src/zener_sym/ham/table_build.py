@@ -123,7 +123,7 @@ def input_files() -> list[pathlib.Path]:
     here = pathlib.Path(__file__).resolve().parent
     files = [here / n for n in ("table_build.py", "spectral.py", "runtime_numpy.py")]
     files += sorted((here.parent / "numerics").glob("*.py"))
-    files += [generated_dir() / n for n in ("ham0_numpy.py", "ham1_numpy.py")]
+    files += [generated_dir() / n for n in ("ham0.py", "ham1.py")]
     return files
 
 

@@ -1,5 +1,7 @@
 """The exact solution of Zener's equation (10): direct integration and its fast tables.
 
+- :mod:`.phases`: the driver of the scipy path's three phases, each reading of the contact given
+  as data (its forms and events);
 - :mod:`.solver`: scipy integration with analytic phases in u = sqrt(delta) at both ends of the
   contact (the reference in float64);
 - :mod:`.mp`: the same problem in mpmath at any precision (the independent reference);

@@ -60,6 +60,12 @@ def test_list_names_every_artefact(capsys):
     assert len(set(artefacts.names())) == len(artefacts.ARTEFACTS)
 
 
+def test_kernels_artefact_lists_every_file_codegen_writes():
+    from zener_sym import codegen
+
+    assert set(artefacts.get("kernels").paths) == {f"generated/{n}" for n, _ in codegen.BUILDERS}
+
+
 def test_unknown_name_is_a_usage_error(capsys):
     assert cli.main(["regen", "--check", "kernel"]) == 2
     err = capsys.readouterr().err

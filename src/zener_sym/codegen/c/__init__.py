@@ -34,8 +34,8 @@ __all__ = ["build_header", "build_source", "EXACT_TABLES", "C_FILES"]
 EXACT_TABLES: list[tuple[str, str, str]] = [
     ("delta", "ZS_DELTA", "exact_table.py"),
 ]
-#: (C name, contact_end macro, table file): force-free-end tables whose summary the C code
-#: serves (their history layout is not evaluated in C yet: zs_history gives ZS_EDOM there).
+#: (C name, contact_end macro, table file): force-free-end tables (the layout of
+#: generated/exact_force_table.py: time pieces C and R, fields f and v) the C code serves.
 FORCE_TABLES: list[tuple[str, str, str]] = [
     ("force", "ZS_FORCE", "exact_force_table.py"),
 ]
@@ -90,9 +90,8 @@ def build_header() -> str:
     for key, val in (("LAM_MIN", _tables.num(ns["LAM_PIECES"][0])),
                      ("LAM_MAX", _tables.num(ns["LAM_PIECES"][-1])),
                      ("LAM_CRIT", str(_ham.lam_crit())),
-                     ("ENDS", ", ".join(m for _, m, _ in EXACT_TABLES)
-                      + "; any other returns ZS_EDOM"),
-                     ("FENDS", ", ".join(m for _, m, _ in FORCE_TABLES) or "none")):
+                     ("ENDS", ", ".join(m for _, m, _ in EXACT_TABLES + FORCE_TABLES)
+                      + "; any other returns ZS_EDOM")):
         text = text.replace(f"@{key}@", val)
     return _c_header("zener_sym.h: C99 API of zener-sym (exact tables and HAM kernels).") + text
 
@@ -124,9 +123,10 @@ def build_source() -> str:
     fswitch = ["    switch (contact_end) {"]
     fdeg = 2
     for name, macro, fname in FORCE_TABLES:
-        text, d = _tables.force_summary_c(name, _tables.load(gen / fname))
+        text, sz = _tables.force_table_c(name, _tables.load(gen / fname))
         data.append(text)
-        fdeg = max(fdeg, d)
+        fdeg = max(fdeg, sz["max_sum"])
+        sizes = {k: max(sizes[k], sz[k]) for k in sizes}
         fswitch.append(f"    case {macro}:\n        return &zs__ftab_{name};")
     fswitch += ["    default:\n        return NULL;", "    }"]
     h1, h1_deg = _tables.ham1_table_c(_tables.load(gen / HAM1_TABLE))

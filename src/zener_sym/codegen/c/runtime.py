@@ -45,14 +45,14 @@ typedef struct {
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
    model "exact", backend "table": same coefficients). out must not be NULL.
-   Ends of contact with tables in this build: @ENDS@; summaries (and zs_lam_for_e) also
-   for @FENDS@ (its histories return ZS_EDOM in this version). */
+   Ends of contact with tables in this build (summary, history and zs_lam_for_e): @ENDS@. */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
-/* Exact history at n times tau[i] (finite, >= 0): compression delta, relative velocity
-   1 - impulse, force delta^{3/2} and impulse; any output pointer may be NULL. Past the end of
-   contact the fields are those the Python history gives there (delta = force = 0, impulse =
-   1 + e, velocity = -e). */
+/* Exact history at n times tau[i] (finite, >= 0): compression delta, velocity delta', force
+   and impulse; any output pointer may be NULL. ZS_DELTA: velocity = 1 - impulse, force
+   delta^{3/2} (the plate's reading); ZS_FORCE: force sqrt(delta) (delta + (3/2) lambda delta')
+   (the grains' reading), impulse 1 - delta'. Past the end of contact the fields are those the
+   Python history gives there (delta = force = 0, impulse = 1 + e, velocity = -e). */
 int zs_history(double lam, int contact_end, size_t n, const double *tau,
                double *delta, double *velocity, double *force, double *impulse);
 
@@ -88,7 +88,8 @@ TYPES = r'''#include <math.h>
 #define ZS__MAX_SUM @MAX_SUM@
 #define ZS__MAX_H1 @MAX_H1@
 #define ZS__MAX_FSUM @MAX_FSUM@
-#define ZS__NFSUM 7  /* delta_m, tau_dc, log_tau_d, log_e, xi_over_lam, log_F_m, log_int_F2 */
+#define ZS__NFSUM 8  /* delta_m, tau_dc, log_tau_d, log_e, xi_over_lam, log_F_m, log_int_F2,
+                        log_tau_p */
 #define ZS__BLOCK 256 /* points per block of a history */
 #define ZS__NSUM 6   /* delta_m, tau_dc, log_tau_d, log_e, int_F2, rest_over_lam */
 
@@ -113,6 +114,7 @@ typedef struct {
     double lam_min, lam_max;
     const double *const *sum;   /* [piece * ZS__NFSUM + field] */
     const int *sum_len;
+    zs__tpiece piece[2];        /* C, R; fields f (in .f) and v = delta' (in .I) */
 } zs__force_table;
 
 /* an exact table (the layout of generated/exact_table.py) */
@@ -223,7 +225,7 @@ static const zs__force_table *zs__force_table_of(int contact_end)
 
 /* the force-free end's summary fields of one lambda (exact.force_table._core) */
 static void zs__force_core(const zs__force_table *t, double lam, double v[ZS__NFSUM],
-                           double *e, double *xi)
+                           double *e, double *xi, int *ip, double *xl)
 {
     int i = -1, j, f, deg = 0;
     double g, x, x2, T[ZS__MAX_FSUM];
@@ -259,6 +261,8 @@ static void zs__force_core(const zs__force_table *t, double lam, double v[ZS__NF
     }
     *xi = lam * v[4];
     *e = *xi < 0.5 ? sqrt(1.0 - *xi > 0.0 ? 1.0 - *xi : 0.0) : exp(v[3]);
+    *ip = i;
+    *xl = x;
 }
 
 static int zs__contact_end_ok(int contact_end)
@@ -276,12 +280,13 @@ int zs_summary(double lam, int contact_end, zs_summary_t *out)
     t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
     if (t == NULL && zs__contact_end_ok(contact_end) && zs__force_table_of(contact_end) != NULL) {
         const zs__force_table *ft = zs__force_table_of(contact_end);
-        double v[ZS__NFSUM], e, xi;
+        double v[ZS__NFSUM], e, xi, x;
+        int ip;
         if (!(lam >= ft->lam_min && lam <= ft->lam_max)) {
             zs__summary_nan(lam, out);
             return ZS_EDOM;
         }
-        zs__force_core(ft, lam, v, &e, &xi);
+        zs__force_core(ft, lam, v, &e, &xi, &ip, &x);
         out->lam = lam;
         out->delta_m = v[0];
         out->tau_dc = v[1];
@@ -388,6 +393,89 @@ static void zs__lin_log(zs__piece_t *P, int k, double start, double end, double 
     P->i3 = 1.0 / c3;
 }
 
+/* the force-free end's history (exact.force_table.history): time piece C, tau <= tau_dc,
+   y = sqrt(tau / tau_dc), delta = tau exp(f); piece R, tau_dc < tau < tau_d, on ln-lambda pieces
+   y linear in tau and delta = exp(f), on sqrt-lambda pieces y = (1 - sqrt((tau_P - tau) /
+   (tau_P - tau_dc))) / (1 - z_end) and delta = (tau_P - tau) exp(f), tau_P the plate end's
+   tau_d (the series log_tau_p) that the recovery is anchored on; v = delta' tabulated */
+static int zs__force_history(const zs__force_table *t, double lam, size_t n, const double *tau,
+                             double *delta, double *velocity, double *force, double *impulse)
+{
+    double v[ZS__NFSUM], e, xi, xl, Tl[ZS__MAX_LAMDEG], tau_dc, tau_d, tau_p = HUGE_VAL;
+    double r_a, r_b = 0.0, c_a, lam_1 = 1.5 * lam;
+    int ip, lg, p, s, k[2];
+    zs__piece_t P[2];
+    size_t i;
+    zs__force_core(t, lam, v, &e, &xi, &ip, &xl);
+    lg = t->log_piece[ip];
+    tau_dc = v[1];
+    tau_d = exp(v[2]);
+    if (lg) {
+        r_a = 1.0 / (tau_d - tau_dc);
+    } else {
+        /* z at tau_d of tau = tau_P - (tau_P - tau_dc) z^2, clipped at 0: at lambda = 0 tau_d
+           and tau_P are the same time, each to rounding (force_table_layout.recovery_z_end) */
+        double gap = tau_p = exp(v[7]);
+        gap -= tau_d;
+        r_b = 1.0 / (tau_p - tau_dc);
+        r_a = 1.0 / (1.0 - sqrt((gap > 0.0 ? gap : 0.0) * r_b));
+    }
+    c_a = 1.0 / tau_dc;
+    Tl[0] = 1.0;
+    Tl[1] = xl;
+    for (s = 2; s < ZS__MAX_LAMDEG; s++)
+        Tl[s] = Tl[s - 1] * 2.0 * xl - Tl[s - 2];
+    for (p = 0; p < 2; p++) {
+        k[p] = t->piece[p].n_sub;
+        for (s = 0; s < ZS__MAX_SUB; s++)
+            P[p].deg[s] = 0;
+    }
+    for (i = 0; i < n; i++) {
+        double tt = tau[i], d = 0.0, vel = -e, gap = 1.0, z, x;
+        double (*m)[2];
+        int sub, j;
+        if (tt < tau_d || tt <= tau_dc) {
+            if (tt <= tau_dc) {
+                p = 0;
+                z = sqrt(tt * c_a) * k[0];
+            } else if (lg) {
+                p = 1;
+                z = (tt - tau_dc) * r_a * k[1];
+            } else {
+                p = 1;
+                gap = tau_p - tt;
+                if (!(gap > 0.0))
+                    gap = 0.0;
+                z = r_a * (1.0 - sqrt(gap * r_b)) * k[1];
+            }
+            /* the sub-piece, as numpy's astype(intp) then clip: a z rounded below 0 stays in
+               the first sub-piece (its x a hair below -1), past k in the last */
+            sub = z >= 0.0 ? (z < (double)k[p] ? (int)z : k[p] - 1) : 0;
+            x = 2.0 * (z - sub) - 1.0;
+            if (P[p].deg[sub] == 0)
+                zs__contract(&t->piece[p], ip, sub, Tl, &P[p]);
+            m = P[p].m[sub];
+            j = P[p].deg[sub] - 1;
+            d = m[j][0];
+            vel = m[j][1];
+            for (j = j - 1; j >= 0; j--) {
+                d = d * x + m[j][0];
+                vel = vel * x + m[j][1];
+            }
+            d = exp(d) * (p == 0 ? tt : gap);
+        }
+        if (delta != NULL)
+            delta[i] = d;
+        if (velocity != NULL)
+            velocity[i] = vel;
+        if (force != NULL)
+            force[i] = sqrt(d) * (d + lam_1 * vel);
+        if (impulse != NULL)
+            impulse[i] = 1.0 - vel;
+    }
+    return ZS_OK;
+}
+
 int zs_history(double lam, int contact_end, size_t n, const double *tau,
                double *delta, double *velocity, double *force, double *impulse)
 {
@@ -398,6 +486,11 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
     int p, s, log_piece;
     size_t i0;
     t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
+    if (t == NULL && zs__contact_end_ok(contact_end)) {
+        const zs__force_table *ft = zs__force_table_of(contact_end);
+        if (ft != NULL && lam >= ft->lam_min && lam <= ft->lam_max && zs__tau_ok(n, tau))
+            return zs__force_history(ft, lam, n, tau, delta, velocity, force, impulse);
+    }
     if (t == NULL || !(lam >= t->lam_min && lam <= t->hist_max) || !zs__tau_ok(n, tau)) {
         zs__fill_nan(n, delta);
         zs__fill_nan(n, velocity);
@@ -528,8 +621,9 @@ static double zs__q_of(const zs__exact_table *t, const zs__force_table *ft, doub
         zs__core(t, lam, 0, &c);
         return use_xi ? 2.0 * lam * c.v[4] : -c.e;
     } else {
-        double v[ZS__NFSUM], e, xi;
-        zs__force_core(ft, lam, v, &e, &xi);
+        double v[ZS__NFSUM], e, xi, x;
+        int ip;
+        zs__force_core(ft, lam, v, &e, &xi, &ip, &x);
         return use_xi ? xi : -e;
     }
 }

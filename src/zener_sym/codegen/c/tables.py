@@ -84,13 +84,34 @@ def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
     out.append(f"static const double *const {p}_sum[{len(sum_ptr)}] = {{{', '.join(sum_ptr)}}};\n")
     out.append(f"static const int {p}_sum_len[{len(sum_len)}] = {{{', '.join(sum_len)}}};\n")
     # history: per time piece and field, per lambda piece and sub-piece, a [rows][cols] matrix
-    pieces_c = []
     n_hist = sum(1 for b in edges[1:] if b <= hist_to)
-    for tp in TIME_PIECES:
+    pieces_c = _history_c(name, p, ns, TIME_PIECES, ("f", "I"), n_lam, out, sizes)
+    logs = ", ".join("1" if lg else "0" for lg in log)
+    out.append(f"static const int {p}_log[{n_lam}] = {{{logs}}};\n")
+    for key in ("max_lamdeg", "max_sum"):
+        sizes[key] = max(sizes[key], 2)
+    out.append(
+        f"static const zs__exact_table zs__tab_{name} = {{\n"
+        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_log,\n"
+        f"    {num(edges[0])}, {num(edges[-1])}, {num(hist_to)},\n"
+        f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
+        f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"
+        f"    {p}_sum, {p}_sum_len,\n"
+        f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
+    return "".join(out), sizes
+
+
+def _history_c(name, p, ns, pieces, keys, n_lam, out, sizes) -> list[str]:
+    """Append to ``out`` the history matrices of every time piece (per field, per lambda piece
+    and sub-piece, a [rows][cols] Chebyshev matrix; a lambda piece without history gets empty
+    entries) and return the ``zs__tpiece`` initialisers, in ``pieces`` order; ``keys`` are the
+    two fields, stored in the struct's (f, I) slots. ``sizes`` is updated."""
+    pieces_c = []
+    for tp in pieces:
         n_sub = int(ns["N_SUB"][tp])
         sizes["max_sub"] = max(sizes["max_sub"], n_sub)
         mats = {}
-        for fld in ("f", "I"):
+        for fld in keys:
             per = ns["HISTORY"][(tp, fld)]
             entries = []
             for ip in range(n_lam):
@@ -116,20 +137,8 @@ def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
             mats[fld] = f"{p}_{tp}{fld}"
             out.append(f"static const zs__mat {p}_{tp}{fld}[{len(entries)}] = {{\n    "
                        + ",\n    ".join(entries) + "\n};\n")
-        pieces_c.append(f"{{{n_sub}, {mats['f']}, {mats['I']}}}")
-    logs = ", ".join("1" if lg else "0" for lg in log)
-    out.append(f"static const int {p}_log[{n_lam}] = {{{logs}}};\n")
-    for key in ("max_lamdeg", "max_sum"):
-        sizes[key] = max(sizes[key], 2)
-    out.append(
-        f"static const zs__exact_table zs__tab_{name} = {{\n"
-        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_log,\n"
-        f"    {num(edges[0])}, {num(edges[-1])}, {num(hist_to)},\n"
-        f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
-        f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"
-        f"    {p}_sum, {p}_sum_len,\n"
-        f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
-    return "".join(out), sizes
+        pieces_c.append(f"{{{n_sub}, {mats[keys[0]]}, {mats[keys[1]]}}}")
+    return pieces_c
 
 
 def ham1_table_c(ns: dict) -> tuple[str, int]:
@@ -164,12 +173,21 @@ def ham1_table_c(ns: dict) -> tuple[str, int]:
 
 #: Summary fields of a force-free-end table the C code reads (zs__F_* order).
 FORCE_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m",
-                      "log_int_F2")
+                      "log_int_F2", "log_tau_p")
+#: Time pieces and fields of a force-free-end history, in the C code's order.
+FORCE_TIME_PIECES = ("C", "R")
+FORCE_HISTORY_KEYS = ("f", "v")
 
 
-def force_summary_c(name: str, ns: dict) -> tuple[str, int]:
-    """C text defining ``static const zs__force_table zs__ftab_<name>`` (the summary of a
-    force-free-end table: sqrt(lambda) below LOG_FROM, ln lambda above), and its largest degree."""
+def force_table_c(name: str, ns: dict) -> tuple[str, dict]:
+    """C text defining ``static const zs__force_table zs__ftab_<name>`` (a force-free-end table,
+    ``generated/exact_force_table.py`` layout: summary in sqrt(lambda) below LOG_FROM, ln lambda
+    above; history in time pieces C and R, fields f and v), and its sizes."""
+    if (tuple(ns.get("TIME_PIECES", ())) != FORCE_TIME_PIECES
+            or tuple(ns.get("HISTORY_KEYS", ())) != FORCE_HISTORY_KEYS):
+        raise ValueError(f"force table {name}: time pieces {ns.get('TIME_PIECES')}, fields "
+                         f"{ns.get('HISTORY_KEYS')}; the C runtime evaluates "
+                         f"{FORCE_TIME_PIECES} with {FORCE_HISTORY_KEYS}")
     keys = tuple(ns.get("SUMMARY_KEYS", ()))
     missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
     if missing:
@@ -187,19 +205,22 @@ def force_summary_c(name: str, ns: dict) -> tuple[str, int]:
     p = f"zs__f{name}"
     out = [f"/* ---- force-free-end summary table '{name}' ---- */\n",
            _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
-    ptrs, lens, deg = [], [], 2
+    ptrs, lens = [], []
+    sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": 2}
     for ip in range(n_lam):
         for key in FORCE_SUMMARY_KEYS:
             c = ns["SUMMARY"][key][ip]
             out.append(_array(f"{p}_s{ip}_{key}", c))
             ptrs.append(f"{p}_s{ip}_{key}")
             lens.append(str(len(c)))
-            deg = max(deg, len(c))
+            sizes["max_sum"] = max(sizes["max_sum"], len(c))
+    pieces_c = _history_c(name, p, ns, FORCE_TIME_PIECES, FORCE_HISTORY_KEYS, n_lam, out, sizes)
     logs = ", ".join("1" if lg else "0" for lg in log)
     out.append(f"static const double *const {p}_sum[{len(ptrs)}] = {{{', '.join(ptrs)}}};\n"
                f"static const int {p}_sum_len[{len(lens)}] = {{{', '.join(lens)}}};\n"
                f"static const int {p}_log[{n_lam}] = {{{logs}}};\n"
                f"static const zs__force_table zs__ftab_{name} = {{\n"
                f"    {n_lam}, {p}_edges, {p}_ga, {p}_gb, {p}_log, {num(edges[0])}, "
-               f"{num(edges[-1])}, {p}_sum, {p}_sum_len\n}};\n\n")
-    return "".join(out), deg
+               f"{num(edges[-1])}, {p}_sum, {p}_sum_len,\n"
+               f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
+    return "".join(out), sizes

@@ -20,7 +20,6 @@ from __future__ import annotations
 import hashlib
 import pathlib
 
-import numpy as np
 import sympy
 
 from .. import derivation_dir, generated_dir
@@ -96,18 +95,6 @@ def build_header() -> str:
     return _c_header("zener_sym.h: C99 API of zener-sym (exact tables and HAM kernels).") + text
 
 
-def _cheb2poly(n: int) -> str:
-    rows = []
-    for j in range(n):
-        e = np.zeros(j + 1)
-        e[j] = 1.0
-        m = np.polynomial.chebyshev.cheb2poly(e)  # integers: exact in float64
-        rows.append("{" + ", ".join(_tables.num(float(v)) for v in
-                                    list(m) + [0.0] * (n - len(m))) + "}")
-    return (f"static const double zs__cheb2poly[ZS__MAX_ROWS][ZS__MAX_ROWS] = {{\n    "
-            + ",\n    ".join(rows) + "\n};\n")
-
-
 def build_source() -> str:
     """generated/c/zener_sym.c: table data, printed HAM formulas and the runtime."""
     gen = generated_dir()
@@ -136,7 +123,6 @@ def build_source() -> str:
                      ("MAX_H1", h1_deg), ("MAX_FSUM", fdeg)):
         types = types.replace(f"@{key}@", str(val))
     runtime = _rt.RUNTIME.replace("@TABLE_SWITCH@", "\n".join(switch)).replace(
-        "@FORCE_SWITCH@", "\n".join(fswitch)).replace(
-        "@CHEB2POLY@", _cheb2poly(sizes["max_rows"]))
+        "@FORCE_SWITCH@", "\n".join(fswitch))
     return (_c_header("zener_sym.c: exact tables, HAM kernels and their evaluation (C99, libm).")
             + types + "".join(data) + h1 + _ham.ham_c() + runtime)

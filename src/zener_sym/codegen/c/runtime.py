@@ -93,16 +93,16 @@ TYPES = r'''#include <math.h>
 #define ZS__BLOCK 256 /* points per block of a history */
 #define ZS__NSUM 6   /* delta_m, tau_dc, log_tau_d, log_e, int_F2, rest_over_lam */
 
-/* one coefficient matrix [rows: time degree][cols: lambda degree], Chebyshev in both */
+/* one sub-piece's history: [cols: lambda degree, Chebyshev][rows: power of x][2 fields] */
 typedef struct {
     int rows, cols;
     const double *c;
 } zs__mat;
 
-/* one time piece of the history: per lambda piece and sub-piece a matrix for f and for I */
+/* one time piece of the history: per lambda piece and sub-piece a matrix */
 typedef struct {
     int n_sub;
-    const zs__mat *f, *I;
+    const zs__mat *m;
 } zs__tpiece;
 
 /* the summary of a force-free-end table (generated/exact_force_table.py): Chebyshev variable
@@ -112,9 +112,9 @@ typedef struct {
     const double *edges, *ga, *gb;
     const int *log_piece;
     double lam_min, lam_max;
-    const double *const *sum;   /* [piece * ZS__NFSUM + field] */
+    const double *const *sum;   /* per piece [degree][ZS__NFSUM field] */
     const int *sum_len;
-    zs__tpiece piece[2];        /* C, R; fields f (in .f) and v = delta' (in .I) */
+    zs__tpiece piece[2];        /* C, R; fields f and v = delta' */
 } zs__force_table;
 
 /* an exact table (the layout of generated/exact_table.py) */
@@ -124,7 +124,7 @@ typedef struct {
     const int *log_piece;       /* Chebyshev variable ln lambda (1) or lambda (0) */
     double lam_min, lam_max, hist_max;
     double log_from, c_stretch, c_end, s_orbit, s_transient;
-    const double *const *sum;   /* [piece * ZS__NSUM + field] */
+    const double *const *sum;   /* per piece [degree][ZS__NSUM field] */
     const int *sum_len;
     zs__tpiece piece[4];        /* C, A, M, B */
 } zs__exact_table;
@@ -152,8 +152,35 @@ static void zs__summary_nan(double lam, zs_summary_t *out)
     out->F_m = out->impulse = out->int_F2 = out->xi = q;
 }
 
-/* monomial coefficients of T_j on [-1, 1]: zs__cheb2poly[j][i] is the coefficient of x^i */
-@CHEB2POLY@
+
+/* T_0(x) .. T_{deg-1}(x). recurrence: T_j = 2x T_{j-1} - T_{j-2}, as numpy's chebvander
+   (the same doubles as Python: a history's piece ends then fall where Python's do). Else, for a
+   summary alone, the same values to a few ulps with a shorter dependency chain: T_2 .. T_7 from
+   T_{m+n} = 2 T_m T_n - T_{|m-n|}, then four interleaved chains T_j = 2 T_4 T_{j-4} - T_{j-8}
+   (the one-step recurrence waits on a multiply and a subtraction per degree, most of a
+   summary's time) */
+static void zs__cheb_T(double x, int deg, int recurrence, double *T)
+{
+    int j;
+    double x2 = 2.0 * x, t4;
+    T[0] = 1.0;
+    if (deg > 1)
+        T[1] = x;
+    if (recurrence || deg <= 8) {
+        for (j = 2; j < deg; j++)
+            T[j] = T[j - 1] * x2 - T[j - 2];
+        return;
+    }
+    T[2] = x2 * x - 1.0;
+    T[3] = x2 * T[2] - x;
+    T[4] = 2.0 * T[2] * T[2] - 1.0;
+    T[5] = 2.0 * T[2] * T[3] - x;
+    T[6] = 2.0 * T[3] * T[3] - 1.0;
+    T[7] = 2.0 * T[3] * T[4] - x;
+    t4 = 2.0 * T[4];
+    for (j = 8; j < deg; j++)
+        T[j] = t4 * T[j - 4] - T[j - 8];
+}
 
 /* the summary fields of one lambda (exact.table._core) */
 typedef struct {
@@ -165,17 +192,13 @@ typedef struct {
 
 static void zs__core(const zs__exact_table *t, double lam, int history, zs__core_t *c)
 {
-    int last = (history ? t->n_hist : t->n_lam) - 1, i, j, f, deg = 0;
-    double g, a, b, x, x2, T[ZS__MAX_SUM], xi, e_direct;
-    /* piece: searchsorted(edges, lam, 'right') - 1, clipped */
-    i = -1;
-    for (j = 0; j <= t->n_lam; j++)
-        if (t->edges[j] <= lam)
-            i = j;
-    if (i < 0)
-        i = 0;
-    if (i > last)
-        i = last;
+    int last = (history ? t->n_hist : t->n_lam) - 1, i, j, deg = 0;
+    double g, a, b, x, T[ZS__MAX_SUM], xi, e_direct;
+    /* piece: searchsorted(edges, lam, 'right') - 1, clipped to [0, last] (lam >= edges[0]);
+       an early exit the branch predictor learns, not a scan every call waits on */
+    i = 0;
+    while (i < last && t->edges[i + 1] <= lam)
+        i++;
     g = t->log_piece[i] ? log(lam) : lam;
     a = t->ga[i];
     b = t->gb[i];
@@ -184,25 +207,66 @@ static void zs__core(const zs__exact_table *t, double lam, int history, zs__core
         x = -1.0;
     if (x > 1.0)
         x = 1.0;
-    for (f = 0; f < ZS__NSUM; f++)
-        if (t->sum_len[i * ZS__NSUM + f] > deg)
-            deg = t->sum_len[i * ZS__NSUM + f];
-    /* T_k(x) by the recurrence and each sum in order of k, as numpy's chebvander and
-       exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
+    deg = t->sum_len[i];
+    /* for a history T_k(x) by the recurrence and each sum in order of k, as numpy's chebvander
+       and exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
        tau_w0, tau_d) falls in the same piece on both sides */
-    T[0] = 1.0;
-    if (deg > 1)
-        T[1] = x;
-    x2 = 2.0 * x;
-    for (j = 2; j < deg; j++)
-        T[j] = T[j - 1] * x2 - T[j - 2];
-    for (f = 0; f < ZS__NSUM; f++) {
-        const double *cf = t->sum[i * ZS__NSUM + f];
-        int n = t->sum_len[i * ZS__NSUM + f];
-        double s = T[0] * cf[0];
-        for (j = 1; j < n; j++)
-            s += T[j] * cf[j];
-        c->v[f] = s;
+    zs__cheb_T(x, deg, history, T);
+    {  /* every field's sum in order of degree, the fields side by side (the block is
+           [degree][field], zero-padded) */
+        /* one named accumulator a field (an array would be kept in memory, every addition
+           then waiting on a store); T[0] = 1 */
+        const double *cf = t->sum[i];
+        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5];
+        if (history) { /* in order of degree, as Python */
+            for (j = 1; j < deg; j++) {
+                const double *r = cf + j * ZS__NSUM, tj = T[j];
+                a0 += tj * r[0];
+                a1 += tj * r[1];
+                a2 += tj * r[2];
+                a3 += tj * r[3];
+                a4 += tj * r[4];
+                a5 += tj * r[5];
+            }
+            c->v[0] = a0;
+            c->v[1] = a1;
+            c->v[2] = a2;
+            c->v[3] = a3;
+            c->v[4] = a4;
+            c->v[5] = a5;
+        } else { /* odd and even degrees apart: half the chain of dependent additions */
+            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0;
+            for (j = 1; j + 1 < deg; j += 2) {
+                const double *r = cf + j * ZS__NSUM, ta = T[j], tb = T[j + 1];
+                a0 += ta * r[0];
+                b0 += tb * r[ZS__NSUM + 0];
+                a1 += ta * r[1];
+                b1 += tb * r[ZS__NSUM + 1];
+                a2 += ta * r[2];
+                b2 += tb * r[ZS__NSUM + 2];
+                a3 += ta * r[3];
+                b3 += tb * r[ZS__NSUM + 3];
+                a4 += ta * r[4];
+                b4 += tb * r[ZS__NSUM + 4];
+                a5 += ta * r[5];
+                b5 += tb * r[ZS__NSUM + 5];
+            }
+            if (j < deg) {
+                const double *r = cf + j * ZS__NSUM, ta = T[j];
+                a0 += ta * r[0];
+                a1 += ta * r[1];
+                a2 += ta * r[2];
+                a3 += ta * r[3];
+                a4 += ta * r[4];
+                a5 += ta * r[5];
+            }
+            c->v[0] = a0 + b0;
+            c->v[1] = a1 + b1;
+            c->v[2] = a2 + b2;
+            c->v[3] = a3 + b3;
+            c->v[4] = a4 + b4;
+            c->v[5] = a5 + b5;
+        }
     }
     c->ip = i;
     c->x = x;
@@ -224,40 +288,89 @@ static const zs__force_table *zs__force_table_of(int contact_end)
 }
 
 /* the force-free end's summary fields of one lambda (exact.force_table._core) */
-static void zs__force_core(const zs__force_table *t, double lam, double v[ZS__NFSUM],
-                           double *e, double *xi, int *ip, double *xl)
+static void zs__force_core(const zs__force_table *t, double lam, int history,
+                           double v[ZS__NFSUM], double *e, double *xi, int *ip, double *xl)
 {
-    int i = -1, j, f, deg = 0;
-    double g, x, x2, T[ZS__MAX_FSUM];
-    for (j = 0; j <= t->n_lam; j++)
-        if (t->edges[j] <= lam)
-            i = j;
-    if (i < 0)
-        i = 0;
-    if (i > t->n_lam - 1)
-        i = t->n_lam - 1;
+    int i, j, deg = 0;
+    double g, x, T[ZS__MAX_FSUM];
+    i = 0; /* searchsorted(edges, lam, 'right') - 1, clipped (lam >= edges[0]) */
+    while (i < t->n_lam - 1 && t->edges[i + 1] <= lam)
+        i++;
     g = t->log_piece[i] ? log(lam) : sqrt(lam);
     x = (2.0 * g - t->ga[i] - t->gb[i]) / (t->gb[i] - t->ga[i]);
     if (x < -1.0)
         x = -1.0;
     if (x > 1.0)
         x = 1.0;
-    for (f = 0; f < ZS__NFSUM; f++)
-        if (t->sum_len[i * ZS__NFSUM + f] > deg)
-            deg = t->sum_len[i * ZS__NFSUM + f];
-    T[0] = 1.0;
-    if (deg > 1)
-        T[1] = x;
-    x2 = 2.0 * x;
-    for (j = 2; j < deg; j++)
-        T[j] = T[j - 1] * x2 - T[j - 2];
-    for (f = 0; f < ZS__NFSUM; f++) {
-        const double *cf = t->sum[i * ZS__NFSUM + f];
-        int n = t->sum_len[i * ZS__NFSUM + f];
-        double s = T[0] * cf[0];
-        for (j = 1; j < n; j++)
-            s += T[j] * cf[j];
-        v[f] = s;
+    deg = t->sum_len[i];
+    zs__cheb_T(x, deg, history, T);
+    {  /* every field's sum in order of degree, the fields side by side (the block is
+           [degree][field], zero-padded) */
+        /* one named accumulator a field (an array would be kept in memory, every addition
+           then waiting on a store); T[0] = 1 */
+        const double *cf = t->sum[i];
+        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5], a6 = cf[6], a7 = cf[7];
+        if (history) { /* in order of degree, as Python */
+            for (j = 1; j < deg; j++) {
+                const double *r = cf + j * ZS__NFSUM, tj = T[j];
+                a0 += tj * r[0];
+                a1 += tj * r[1];
+                a2 += tj * r[2];
+                a3 += tj * r[3];
+                a4 += tj * r[4];
+                a5 += tj * r[5];
+                a6 += tj * r[6];
+                a7 += tj * r[7];
+            }
+            v[0] = a0;
+            v[1] = a1;
+            v[2] = a2;
+            v[3] = a3;
+            v[4] = a4;
+            v[5] = a5;
+            v[6] = a6;
+            v[7] = a7;
+        } else { /* odd and even degrees apart: half the chain of dependent additions */
+            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0, b6 = 0.0, b7 = 0.0;
+            for (j = 1; j + 1 < deg; j += 2) {
+                const double *r = cf + j * ZS__NFSUM, ta = T[j], tb = T[j + 1];
+                a0 += ta * r[0];
+                b0 += tb * r[ZS__NFSUM + 0];
+                a1 += ta * r[1];
+                b1 += tb * r[ZS__NFSUM + 1];
+                a2 += ta * r[2];
+                b2 += tb * r[ZS__NFSUM + 2];
+                a3 += ta * r[3];
+                b3 += tb * r[ZS__NFSUM + 3];
+                a4 += ta * r[4];
+                b4 += tb * r[ZS__NFSUM + 4];
+                a5 += ta * r[5];
+                b5 += tb * r[ZS__NFSUM + 5];
+                a6 += ta * r[6];
+                b6 += tb * r[ZS__NFSUM + 6];
+                a7 += ta * r[7];
+                b7 += tb * r[ZS__NFSUM + 7];
+            }
+            if (j < deg) {
+                const double *r = cf + j * ZS__NFSUM, ta = T[j];
+                a0 += ta * r[0];
+                a1 += ta * r[1];
+                a2 += ta * r[2];
+                a3 += ta * r[3];
+                a4 += ta * r[4];
+                a5 += ta * r[5];
+                a6 += ta * r[6];
+                a7 += ta * r[7];
+            }
+            v[0] = a0 + b0;
+            v[1] = a1 + b1;
+            v[2] = a2 + b2;
+            v[3] = a3 + b3;
+            v[4] = a4 + b4;
+            v[5] = a5 + b5;
+            v[6] = a6 + b6;
+            v[7] = a7 + b7;
+        }
     }
     *xi = lam * v[4];
     *e = *xi < 0.5 ? sqrt(1.0 - *xi > 0.0 ? 1.0 - *xi : 0.0) : exp(v[3]);
@@ -286,7 +399,7 @@ int zs_summary(double lam, int contact_end, zs_summary_t *out)
             zs__summary_nan(lam, out);
             return ZS_EDOM;
         }
-        zs__force_core(ft, lam, v, &e, &xi, &ip, &x);
+        zs__force_core(ft, lam, 0, v, &e, &xi, &ip, &x);
         out->lam = lam;
         out->delta_m = v[0];
         out->tau_dc = v[1];
@@ -350,31 +463,28 @@ typedef struct {
 
 static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl, zs__piece_t *P)
 {
-    double c[2][ZS__MAX_ROWS];
-    int fld, j, k, i, deg = 1; /* an empty matrix counts as the polynomial 0 */
-    for (fld = 0; fld < 2; fld++) {
-        const zs__mat *m = (fld == 0 ? tp->f : tp->I) + ip * tp->n_sub + sub;
-        for (j = 0; j < ZS__MAX_ROWS; j++)
-            c[fld][j] = 0.0;
-        /* k outer: each row's sum is its own accumulator, so the rows' additions overlap (one
-           row at a time waits on every addition's latency) */
-        for (k = 0; k < m->cols; k++) {
-            const double *col = m->c + k, tk = Tl[k];
-            for (j = 0; j < m->rows; j++)
-                c[fld][j] += col[j * m->cols] * tk;
-        }
-        if (m->rows > deg)
-            deg = m->rows;
+    const zs__mat *m = tp->m + ip * tp->n_sub + sub;
+    double (*o)[2] = P->m[sub];
+    int j, k, n = m->rows;
+    if (n == 0) { /* no coefficients: the polynomial 0 */
+        o[0][0] = o[0][1] = 0.0;
+        P->deg[sub] = 1;
+        return;
     }
-    /* Chebyshev -> monomial in x (exact.table._history_layout) */
-    for (i = 0; i < deg; i++)
-        for (fld = 0; fld < 2; fld++) {
-            double s = 0.0;
-            for (j = i; j < deg; j++)
-                s += zs__cheb2poly[j][i] * c[fld][j];
-            P->m[sub][i][fld] = s;
+    /* sum over the lambda degree k in order; the rows of field pairs are contiguous, so the
+       two fields' multiply-adds go as one pair (and the rows' sums overlap) */
+    for (j = 0; j < n; j++) {
+        o[j][0] = m->c[2 * j] * Tl[0];
+        o[j][1] = m->c[2 * j + 1] * Tl[0];
+    }
+    for (k = 1; k < m->cols; k++) {
+        const double *c = m->c + (size_t)k * 2 * (size_t)n, tk = Tl[k];
+        for (j = 0; j < n; j++) {
+            o[j][0] += c[2 * j] * tk;
+            o[j][1] += c[2 * j + 1] * tk;
         }
-    P->deg[sub] = deg;
+    }
+    P->deg[sub] = n;
 }
 
 /* constants of the lin_log map of piece A or M (exact.table._scaled_maps) */
@@ -406,7 +516,7 @@ static int zs__force_history(const zs__force_table *t, double lam, size_t n, con
     int ip, lg, p, s, k[2];
     zs__piece_t P[2];
     size_t i;
-    zs__force_core(t, lam, v, &e, &xi, &ip, &xl);
+    zs__force_core(t, lam, 1, v, &e, &xi, &ip, &xl);
     lg = t->log_piece[ip];
     tau_dc = v[1];
     tau_d = exp(v[2]);
@@ -623,7 +733,7 @@ static double zs__q_of(const zs__exact_table *t, const zs__force_table *ft, doub
     } else {
         double v[ZS__NFSUM], e, xi, x;
         int ip;
-        zs__force_core(ft, lam, v, &e, &xi, &ip, &x);
+        zs__force_core(ft, lam, 0, v, &e, &xi, &ip, &x);
         return use_xi ? xi : -e;
     }
 }

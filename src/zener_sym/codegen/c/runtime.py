@@ -466,6 +466,7 @@ static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl
     const zs__mat *m = tp->m + ip * tp->n_sub + sub;
     double (*o)[2] = P->m[sub];
     int j, k, n = m->rows;
+    double acc[2 * ZS__MAX_ROWS]; /* a local the table cannot alias: the pairs vectorise */
     if (n == 0) { /* no coefficients: the polynomial 0 */
         o[0][0] = o[0][1] = 0.0;
         P->deg[sub] = 1;
@@ -473,18 +474,27 @@ static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl
     }
     /* sum over the lambda degree k in order; the rows of field pairs are contiguous, so the
        two fields' multiply-adds go as one pair (and the rows' sums overlap) */
-    for (j = 0; j < n; j++) {
-        o[j][0] = m->c[2 * j] * Tl[0];
-        o[j][1] = m->c[2 * j + 1] * Tl[0];
-    }
+    for (j = 0; j < 2 * n; j++)
+        acc[j] = m->c[j] * Tl[0];
     for (k = 1; k < m->cols; k++) {
         const double *c = m->c + (size_t)k * 2 * (size_t)n, tk = Tl[k];
-        for (j = 0; j < n; j++) {
-            o[j][0] += c[2 * j] * tk;
-            o[j][1] += c[2 * j + 1] * tk;
-        }
+        for (j = 0; j < 2 * n; j++)
+            acc[j] += c[j] * tk;
+    }
+    for (j = 0; j < n; j++) {
+        o[j][0] = acc[2 * j];
+        o[j][1] = acc[2 * j + 1];
     }
     P->deg[sub] = n;
+}
+
+/* ln(1 + r) for r > -1 to a few ulps relative (Goldberg, "What every computer scientist should
+   know about floating-point arithmetic", Thm. 4): libm's log of w = 1 + r, times r / (w - 1),
+   which undoes the rounding of w. libm's log1p is twice log's time, most of a history point's */
+static double zs__log1p(double r)
+{
+    double w = 1.0 + r;
+    return w == 1.0 ? r : log(w) * (r / (w - 1.0));
 }
 
 /* constants of the lin_log map of piece A or M (exact.table._scaled_maps) */
@@ -664,7 +674,7 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
                 z = -Q->u0;
                 if (Q->i3 != 0.0)
                     z += ts * Q->i3;
-                z += log1p((pp - qq) / (1.0 + qq));
+                z += zs__log1p((pp - qq) / (1.0 + qq));
                 z *= Q->a;
             }
             if (!(z >= 0.0)) /* rounding at a piece's start (or a NaN): the first sub-piece */

@@ -120,7 +120,7 @@ typedef struct {
 /* an exact table (the layout of generated/exact_table.py) */
 typedef struct {
     int n_lam, n_hist;          /* lambda pieces; those with a history table */
-    const double *edges, *ga, *gb;
+    const double *edges, *ga, *gb, *xk, *xo; /* x = (2 g - ga - gb) / (gb - ga) ~ g xk - xo */
     const int *log_piece;       /* Chebyshev variable ln lambda (1) or lambda (0) */
     double lam_min, lam_max, hist_max;
     double log_from, c_stretch, c_end, s_orbit, s_transient;
@@ -202,7 +202,9 @@ static void zs__core(const zs__exact_table *t, double lam, int history, zs__core
     g = t->log_piece[i] ? log(lam) : lam;
     a = t->ga[i];
     b = t->gb[i];
-    x = (2.0 * g - a - b) / (b - a);
+    /* a history: Python's division (the same x, the same piece ends); a summary: the division
+       folded into two constants (within an ulp or two of x, off the summary's critical path) */
+    x = history ? (2.0 * g - a - b) / (b - a) : g * t->xk[i] - t->xo[i];
     if (x < -1.0)
         x = -1.0;
     if (x > 1.0)

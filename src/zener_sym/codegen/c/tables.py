@@ -71,7 +71,11 @@ def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
     gb = [_log_rounded(b) if lg else b for b, lg in zip(edges[1:], log)]
     p = f"zs__{name}"
     out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n",
-           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
+           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb),
+           # x = g k - o, a summary's piece variable without a division (IEEE operations on the
+           # written doubles: the same on every machine)
+           _array(f"{p}_xk", [2.0 / (b - a) for a, b in zip(ga, gb)]),
+           _array(f"{p}_xo", [(a + b) / (b - a) for a, b in zip(ga, gb)])]
     # summary: per lambda piece, its fields' Chebyshev coefficients interleaved
     sizes = {"max_lamdeg": 0, "max_rows": 0, "max_sub": 0, "max_sum": 0}
     sizes["max_sum"] = _summary_blocks(p, ns, EXACT_SUMMARY_KEYS, n_lam, out)
@@ -84,7 +88,7 @@ def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
         sizes[key] = max(sizes[key], 2)
     out.append(
         f"static const zs__exact_table zs__tab_{name} = {{\n"
-        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_log,\n"
+        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_xk, {p}_xo, {p}_log,\n"
         f"    {num(edges[0])}, {num(edges[-1])}, {num(hist_to)},\n"
         f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
         f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 07e9630de2d75c69
+ * Inputs hash: 3662cf910ffe9ce1
  * SymPy version: 1.14.0
  */
 #ifndef ZENER_SYM_H
@@ -48,7 +48,8 @@ typedef struct {
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
    model "exact", backend "table": same coefficients). out must not be NULL.
-   Ends of contact with tables in this build (summary, history and zs_lam_for_e): ZS_DELTA, ZS_FORCE; any other returns ZS_EDOM. */
+   Ends of contact with tables in this build (summary, history and zs_lam_for_e):
+   ZS_DELTA, ZS_FORCE; any other returns ZS_EDOM. */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
 /* Exact history at n times tau[i] (finite, >= 0): compression delta, velocity delta', force

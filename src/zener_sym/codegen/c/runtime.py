@@ -45,7 +45,8 @@ typedef struct {
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
    model "exact", backend "table": same coefficients). out must not be NULL.
-   Ends of contact with tables in this build (summary, history and zs_lam_for_e): @ENDS@. */
+   Ends of contact with tables in this build (summary, history and zs_lam_for_e):
+   @ENDS@. */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
 /* Exact history at n times tau[i] (finite, >= 0): compression delta, velocity delta', force

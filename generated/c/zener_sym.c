@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 3662cf910ffe9ce1
+ * Inputs hash: b2e50ca45e56690e
  * SymPy version: 1.14.0
  */
 #include <math.h>
@@ -23737,7 +23737,7 @@ static void zs__fill_nan(size_t n, double *a)
 /* the per-call state of one time piece: its map's constants and its sub-pieces' monomial
    coefficients in x (f and I side by side), contracted in lambda when first needed */
 typedef struct {
-    double a, u0, s, e, i1, i2, i3, d;
+    double a, u0, s, e, i1, i2, i3, d, ra;
     int deg[ZS__MAX_SUB];                   /* 0: not contracted yet */
     double m[ZS__MAX_SUB][ZS__MAX_ROWS][2];
 } zs__piece_t;
@@ -23922,13 +23922,16 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
         zs__lin_log(&P[2], t->piece[2].n_sub, tau_s, c.tau_w0, inf, lam, lam);
     P[3].a = t->piece[3].n_sub * (double)t->piece[3].n_sub / (c.tau_d - c.tau_w0);
     P[3].d = c.tau_d;
+    /* 1 / sqrt(a) of the square-root maps: sqrt(tau) = z / sqrt(a) for the force */
+    P[0].ra = 1.0 / sqrt(P[0].a);
+    P[3].ra = 1.0 / sqrt(P[3].a);
     imp_end = 1.0 + c.e;
     /* blocks of points in three passes (piece and local variable; Horner; exp and outputs):
        the Horner pass has no calls, so the processor overlaps the points' chains */
     for (i0 = 0; i0 < n; i0 += ZS__BLOCK) {
         size_t nb = n - i0 < ZS__BLOCK ? n - i0 : ZS__BLOCK, b;
         int pc[ZS__BLOCK], sb[ZS__BLOCK];
-        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK];
+        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK], zr[ZS__BLOCK];
         for (b = 0; b < nb; b++) {
             double tt = tau[i0 + b], z;
             int k, sub;
@@ -23944,8 +23947,10 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             k = t->piece[p].n_sub;
             if (p == 0) {
                 z = sqrt(tt * Q->a);
+                zr[b] = z;
             } else if (p == 3) {
                 z = sqrt((Q->d - tt) * Q->a);
+                zr[b] = z;
             } else {
                 /* u = ln(1 + p) + ts i3 - ln(1 + q), p = ts i1, q = te i2 (table_build.lin_log),
                    the logarithms as one, ln(1 + (p - q) / (1 + q)): log1p of a small argument
@@ -23987,16 +23992,23 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             Iv[b] = I;
         }
         for (b = 0; b < nb; b++) {
-            double tt = tau[i0 + b], d, I = Iv[b];
+            double tt = tau[i0 + b], d, sd, I = Iv[b];
             p = pc[b];
+            /* h = exp(f / 2): delta = h^2 (times tau or tau_d - tau), and sqrt(delta) for the
+               force without a square root (the maps' z = sqrt(a tau) gives sqrt(tau)) */
             if (p == 4) {
-                d = 0.0;
+                d = sd = 0.0;
             } else {
-                d = exp(fv[b]);
-                if (p == 0)
+                double h = exp(0.5 * fv[b]);
+                d = h * h;
+                sd = h;
+                if (p == 0) {
                     d *= tt;
-                else if (p == 3)
+                    sd *= zr[b] * P[0].ra;
+                } else if (p == 3) {
                     d *= P[3].d - tt;
+                    sd *= zr[b] * P[3].ra;
+                }
             }
             if (delta != NULL)
                 delta[i0 + b] = d;
@@ -24005,7 +24017,7 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             if (velocity != NULL)
                 velocity[i0 + b] = 1.0 - I;
             if (force != NULL)
-                force[i0 + b] = sqrt(d) * d;
+                force[i0 + b] = sd * d;
         }
     }
     return ZS_OK;

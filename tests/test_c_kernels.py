@@ -44,16 +44,11 @@ def _python():
     from zener_sym import api
     from zener_sym.generated import exact_table
 
-    try:  # the numpy HAM kernels: a runtime around formula-only generated files (newer tree)
-        from zener_sym.ham.runtime_numpy import ham0 as ham0_numpy
-        from zener_sym.ham.runtime_numpy import ham1 as ham1_numpy
-    except ImportError:  # the generated modules themselves (this tree)
-        from zener_sym.generated import ham0_numpy, ham1_numpy
-
-    try:  # the Gauss-Jacobi rule of the first-order integrals (moving to zener_sym.numerics)
-        from zener_sym.numerics import sqrt_integrals as quadrature
-    except ImportError:
-        from zener_sym.ham import quadrature
+    # the numpy HAM kernels (the runtime around the formula-only generated files) and the
+    # Gauss-Jacobi rule of the first-order integrals
+    from zener_sym.ham.runtime_numpy import ham0 as ham0_numpy
+    from zener_sym.ham.runtime_numpy import ham1 as ham1_numpy
+    from zener_sym.numerics import sqrt_integrals as quadrature
 
     def exact_summary(lam):
         return api.summary(np.atleast_1d(lam), model="exact", backend="table")
@@ -232,6 +227,82 @@ def test_force_end_summary_matches_python(lib):
                                                        rel=1e-12), e
 
 
+def _force_piece_times(lam):
+    """The force-free end's time-piece ends (0, tau_dc, tau_d), their neighbouring doubles and a
+    grid to past the end of contact; the ends from the generated force table's coefficients
+    (numpy's chebval in the piece's variable: sqrt(lambda) below LOG_FROM, ln lambda above), not
+    by the code under test."""
+    from zener_sym.generated import exact_force_table as t
+
+    edges = np.array(t.LAM_PIECES, dtype=float)
+    i = min(int(np.searchsorted(edges, lam, side="right")) - 1, len(edges) - 2)
+    a, b = edges[i], edges[i + 1]
+    f = np.log if a >= t.LOG_FROM else np.sqrt
+    x = np.clip((2 * f(lam) - f(a) - f(b)) / (f(b) - f(a)), -1, 1)
+    v = {k: float(np.polynomial.chebyshev.chebval(x, t.SUMMARY[k][i])) for k in t.SUMMARY}
+    tau_dc, tau_d = v["tau_dc"], float(np.exp(v["log_tau_d"]))
+    ends = [0.0, tau_dc, tau_d]
+    pts = list(ends) + [np.nextafter(x, 0) for x in ends[1:]] + [np.nextafter(x, np.inf)
+                                                                  for x in ends]
+    pts += list(np.linspace(0, 1.1 * tau_d, 400))
+    return np.array(sorted(pts)), v
+
+
+def _force_lams():
+    from zener_sym.generated import exact_force_table as t
+
+    rng = np.random.default_rng(2025)
+    return sorted({float(x) for x in t.LAM_PIECES} | {float(x) for x in rng.uniform(0, 1000, 12)}
+                  | {float(x) for x in rng.uniform(0, 5, 6)} | {1e-12, 1e-9, 0.01, 4.999999})
+
+
+def test_force_end_history_matches_python(lib):
+    """ZS_FORCE histories against the force-free end's tables in Python (same coefficients):
+    within 1e-14 of the value, with a floor of 1e-14 of each field's scale (delta_m, F_m, 1 for
+    the velocity and the impulse), at every lambda piece's edge and random lambda, at the ends
+    of the time pieces C and R with their neighbouring doubles, and past the end of contact."""
+    api = PY["api"]
+    for lam in _force_lams():
+        tau, v = _force_piece_times(lam)
+        rc, c = c_history(lib, lam, tau, 1)
+        assert rc == 0
+        py = api.history(lam, tau, model="exact", contact_end="force", backend="table")
+        dm, fm = v["delta_m"], float(np.exp(v["log_F_m"]))
+        scale = {"delta": dm, "force": fm, "impulse": 1.0, "velocity": 1.0}
+        for f, s in scale.items():
+            want = getattr(py, f)
+            err = np.abs(c[f] - want)
+            bad = ~(err <= 1e-14 * np.maximum(np.abs(want), s))
+            assert not bad.any(), (lam, f, tau[bad][:3], c[f][bad][:3], want[bad][:3])
+        # past the end of contact: no contact left, the velocity -e (the Python history's)
+        past = tau > np.exp(v["log_tau_d"]) * (1 + 1e-12)
+        assert past.any() and np.all(c["delta"][past] == 0.0)
+        e = float(api.summary(lam, model="exact", contact_end="force", backend="table").e)
+        np.testing.assert_allclose(c["velocity"][past], -e, rtol=1e-15, atol=0)
+        np.testing.assert_allclose(c["impulse"][past], 1.0 + e, rtol=1e-15, atol=0)
+        # unsorted times and NULL outputs give the same numbers
+        perm = np.random.default_rng(7).permutation(tau.size)
+        tp = np.ascontiguousarray(tau[perm])
+        d = np.empty(tau.size)
+        n = ctypes.POINTER(ctypes.c_double)()
+        assert lib.zs_history(lam, 1, tau.size, _ptr(tp), _ptr(d), n, n, n) == 0
+        np.testing.assert_array_equal(d, c["delta"][perm])
+
+
+def test_force_end_history_pointwise_relative(lib):
+    """delta and the velocity relative pointwise (1e-14) inside the contact, away from the zeros
+    of delta (tau = 0, tau_d) and of the velocity (near tau_dc)."""
+    api = PY["api"]
+    for lam in (0.0, 0.7, 3.0, 42.0, 1000.0):
+        tau, v = _force_piece_times(lam)
+        td, tdc = float(np.exp(v["log_tau_d"])), v["tau_dc"]
+        tau = tau[(tau > 1e-3 * td) & (tau < 0.999 * td) & (np.abs(tau - tdc) > 0.05 * tdc)]
+        _, c = c_history(lib, lam, tau, 1)
+        py = api.history(lam, tau, model="exact", contact_end="force", backend="table")
+        np.testing.assert_allclose(c["delta"], py.delta, rtol=1e-14, atol=0)
+        np.testing.assert_allclose(c["velocity"], py.velocity, rtol=1e-14, atol=0)
+
+
 def test_lam_for_e_inverts_python_e(lib):
     """lambda(e) against brentq on the Python table's e(lambda), and the round trip."""
     from scipy.optimize import brentq
@@ -343,14 +414,16 @@ def test_edom_cases(lib):
         assert c_summary(lib, 1.0, end)[0] == 1
         assert c_history(lib, 1.0, tau_ok, end)[0] == 1
         assert math.isnan(lib.zs_lam_for_e(0.5, end))
-    # the force-free end: summaries from its tables, histories not in C yet (refused, never
-    # answered wrongly)
-    assert c_summary(lib, 1.0, 1)[0] == 0
-    rc, h = c_history(lib, 1.0, tau_ok, 1)
-    assert rc == 1 and all(_all_nan(v) for v in h.values())
-    for lam in (NAN, -1.0, 1001.0):
+    # the force-free end: its range and its times checked as the plate's
+    assert c_summary(lib, 1.0, 1)[0] == 0 and c_history(lib, 1.0, tau_ok, 1)[0] == 0
+    for lam in (NAN, -1.0, 1000.0000000001, 1001.0, float("inf")):
         rc, s = c_summary(lib, lam, 1)
         assert rc == 1 and _all_nan([s[f] for f in FIELDS if f != "lam"]), lam
+        rc, h = c_history(lib, lam, tau_ok, 1)
+        assert rc == 1 and all(_all_nan(v) for v in h.values()), lam
+    for tau in ([NAN], [-1.0], [1.0, float("inf")], [0.5, -0.0 - 1e-300]):
+        rc, h = c_history(lib, 1.0, np.array(tau), 1)
+        assert rc == 1 and all(_all_nan(v) for v in h.values()), tau
     for tau in ([NAN], [-1.0], [1.0, float("inf")], [0.5, -0.0 - 1e-300]):
         rc, h = c_history(lib, 1.0, np.array(tau))
         assert rc == 1 and all(_all_nan(v) for v in h.values()), tau
@@ -395,6 +468,12 @@ int main(void)
         rc |= zs_history(lams[j], ZS_DELTA, n, tau, NULL, NULL, f, NULL);
         printf("%.17g %.17g %.17g %.17g\n", s.e, s.tau_d, d[n / 3], I[n / 2]);
         printf("%.17g\n", zs_lam_for_e(s.e, ZS_DELTA));
+        rc |= zs_summary(lams[j], ZS_FORCE, &s);
+        for (i = 0; i < n; i++)
+            tau[i] = 1.1 * s.tau_d * (double)(n - 1 - i) / (double)(n - 1);
+        rc |= zs_history(lams[j], ZS_FORCE, n, tau, d, v, f, I);
+        rc |= zs_history(lams[j], ZS_FORCE, n, tau, NULL, v, NULL, NULL);
+        printf("%.17g %.17g %.17g %.17g %.17g\n", s.e, s.tau_d, d[n / 3], v[n / 2], f[n / 4]);
         if (lams[j] < ZS_LAM_CRIT) {
             rc |= zs_ham0_history(lams[j], n, tau, d, f);
             rc |= zs_ham1_history(lams[j], 60, tau, d, f);
@@ -411,6 +490,8 @@ int main(void)
             return 5;
         if (zs_ham1_history(bad[j], n, tau, d, f) != ZS_EDOM || !isnan(f[n - 1]))
             return 6;
+        if (zs_history(bad[j], ZS_FORCE, n, tau, d, v, f, I) != ZS_EDOM || !isnan(v[0]))
+            return 8;
     }
     if (zs_summary(1.0, ZS_FORCE + 1, &s) != ZS_EDOM || !isnan(zs_lam_for_e(2.0, ZS_DELTA)))
         return 7;
@@ -434,6 +515,13 @@ def test_sanitized_driver(tmp_path, lib):
     first = [float(x) for x in r.stdout.split("\n")[0].split()]
     _, s = c_summary(lib, 0.0)
     assert first[:2] == pytest.approx([s["e"], s["tau_d"]], rel=1e-15)
+    # the ZS_FORCE line of lambda = 0 (third line): the optimized library's summary and history
+    third = [float(x) for x in r.stdout.split("\n")[2].split()]
+    _, s = c_summary(lib, 0.0, 1)
+    tau = 1.1 * s["tau_d"] * np.arange(699, -1, -1) / 699.0
+    _, h = c_history(lib, 0.0, tau, 1)
+    assert third == pytest.approx([s["e"], s["tau_d"], h["delta"][700 // 3],
+                                   h["velocity"][350], h["force"][175]], rel=1e-15, abs=1e-300)
 
 
 # --- the DEM example -------------------------------------------------------------------------

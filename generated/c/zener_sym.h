@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: f8fdef63c14db88f
+ * Inputs hash: b2e50ca45e56690e
  * SymPy version: 1.14.0
  */
 #ifndef ZENER_SYM_H
@@ -48,14 +48,15 @@ typedef struct {
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
    model "exact", backend "table": same coefficients). out must not be NULL.
-   Ends of contact with tables in this build: ZS_DELTA; any other returns ZS_EDOM; summaries (and zs_lam_for_e) also
-   for ZS_FORCE (its histories return ZS_EDOM in this version). */
+   Ends of contact with tables in this build (summary, history and zs_lam_for_e):
+   ZS_DELTA, ZS_FORCE; any other returns ZS_EDOM. */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
-/* Exact history at n times tau[i] (finite, >= 0): compression delta, relative velocity
-   1 - impulse, force delta^{3/2} and impulse; any output pointer may be NULL. Past the end of
-   contact the fields are those the Python history gives there (delta = force = 0, impulse =
-   1 + e, velocity = -e). */
+/* Exact history at n times tau[i] (finite, >= 0): compression delta, velocity delta', force
+   and impulse; any output pointer may be NULL. ZS_DELTA: velocity = 1 - impulse, force
+   delta^{3/2} (the plate's reading); ZS_FORCE: force sqrt(delta) (delta + (3/2) lambda delta')
+   (the grains' reading), impulse 1 - delta'. Past the end of contact the fields are those the
+   Python history gives there (delta = force = 0, impulse = 1 + e, velocity = -e). */
 int zs_history(double lam, int contact_end, size_t n, const double *tau,
                double *delta, double *velocity, double *force, double *impulse);
 

@@ -20,7 +20,6 @@ from __future__ import annotations
 import hashlib
 import pathlib
 
-import numpy as np
 import sympy
 
 from .. import derivation_dir, generated_dir
@@ -34,8 +33,8 @@ __all__ = ["build_header", "build_source", "EXACT_TABLES", "C_FILES"]
 EXACT_TABLES: list[tuple[str, str, str]] = [
     ("delta", "ZS_DELTA", "exact_table.py"),
 ]
-#: (C name, contact_end macro, table file): force-free-end tables whose summary the C code
-#: serves (their history layout is not evaluated in C yet: zs_history gives ZS_EDOM there).
+#: (C name, contact_end macro, table file): force-free-end tables (the layout of
+#: generated/exact_force_table.py: time pieces C and R, fields f and v) the C code serves.
 FORCE_TABLES: list[tuple[str, str, str]] = [
     ("force", "ZS_FORCE", "exact_force_table.py"),
 ]
@@ -90,23 +89,10 @@ def build_header() -> str:
     for key, val in (("LAM_MIN", _tables.num(ns["LAM_PIECES"][0])),
                      ("LAM_MAX", _tables.num(ns["LAM_PIECES"][-1])),
                      ("LAM_CRIT", str(_ham.lam_crit())),
-                     ("ENDS", ", ".join(m for _, m, _ in EXACT_TABLES)
-                      + "; any other returns ZS_EDOM"),
-                     ("FENDS", ", ".join(m for _, m, _ in FORCE_TABLES) or "none")):
+                     ("ENDS", ", ".join(m for _, m, _ in EXACT_TABLES + FORCE_TABLES)
+                      + "; any other returns ZS_EDOM")):
         text = text.replace(f"@{key}@", val)
     return _c_header("zener_sym.h: C99 API of zener-sym (exact tables and HAM kernels).") + text
-
-
-def _cheb2poly(n: int) -> str:
-    rows = []
-    for j in range(n):
-        e = np.zeros(j + 1)
-        e[j] = 1.0
-        m = np.polynomial.chebyshev.cheb2poly(e)  # integers: exact in float64
-        rows.append("{" + ", ".join(_tables.num(float(v)) for v in
-                                    list(m) + [0.0] * (n - len(m))) + "}")
-    return (f"static const double zs__cheb2poly[ZS__MAX_ROWS][ZS__MAX_ROWS] = {{\n    "
-            + ",\n    ".join(rows) + "\n};\n")
 
 
 def build_source() -> str:
@@ -124,9 +110,10 @@ def build_source() -> str:
     fswitch = ["    switch (contact_end) {"]
     fdeg = 2
     for name, macro, fname in FORCE_TABLES:
-        text, d = _tables.force_summary_c(name, _tables.load(gen / fname))
+        text, sz = _tables.force_table_c(name, _tables.load(gen / fname))
         data.append(text)
-        fdeg = max(fdeg, d)
+        fdeg = max(fdeg, sz["max_sum"])
+        sizes = {k: max(sizes[k], sz[k]) for k in sizes}
         fswitch.append(f"    case {macro}:\n        return &zs__ftab_{name};")
     fswitch += ["    default:\n        return NULL;", "    }"]
     h1, h1_deg = _tables.ham1_table_c(_tables.load(gen / HAM1_TABLE))
@@ -136,7 +123,6 @@ def build_source() -> str:
                      ("MAX_H1", h1_deg), ("MAX_FSUM", fdeg)):
         types = types.replace(f"@{key}@", str(val))
     runtime = _rt.RUNTIME.replace("@TABLE_SWITCH@", "\n".join(switch)).replace(
-        "@FORCE_SWITCH@", "\n".join(fswitch)).replace(
-        "@CHEB2POLY@", _cheb2poly(sizes["max_rows"]))
+        "@FORCE_SWITCH@", "\n".join(fswitch))
     return (_c_header("zener_sym.c: exact tables, HAM kernels and their evaluation (C99, libm).")
             + types + "".join(data) + h1 + _ham.ham_c() + runtime)

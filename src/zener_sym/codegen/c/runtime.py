@@ -45,14 +45,15 @@ typedef struct {
 
 /* Exact model, ZS_LAM_MIN <= lam <= ZS_LAM_MAX, from the tables (the Python package's
    model "exact", backend "table": same coefficients). out must not be NULL.
-   Ends of contact with tables in this build: @ENDS@; summaries (and zs_lam_for_e) also
-   for @FENDS@ (its histories return ZS_EDOM in this version). */
+   Ends of contact with tables in this build (summary, history and zs_lam_for_e):
+   @ENDS@. */
 int zs_summary(double lam, int contact_end, zs_summary_t *out);
 
-/* Exact history at n times tau[i] (finite, >= 0): compression delta, relative velocity
-   1 - impulse, force delta^{3/2} and impulse; any output pointer may be NULL. Past the end of
-   contact the fields are those the Python history gives there (delta = force = 0, impulse =
-   1 + e, velocity = -e). */
+/* Exact history at n times tau[i] (finite, >= 0): compression delta, velocity delta', force
+   and impulse; any output pointer may be NULL. ZS_DELTA: velocity = 1 - impulse, force
+   delta^{3/2} (the plate's reading); ZS_FORCE: force sqrt(delta) (delta + (3/2) lambda delta')
+   (the grains' reading), impulse 1 - delta'. Past the end of contact the fields are those the
+   Python history gives there (delta = force = 0, impulse = 1 + e, velocity = -e). */
 int zs_history(double lam, int contact_end, size_t n, const double *tau,
                double *delta, double *velocity, double *force, double *impulse);
 
@@ -88,20 +89,21 @@ TYPES = r'''#include <math.h>
 #define ZS__MAX_SUM @MAX_SUM@
 #define ZS__MAX_H1 @MAX_H1@
 #define ZS__MAX_FSUM @MAX_FSUM@
-#define ZS__NFSUM 7  /* delta_m, tau_dc, log_tau_d, log_e, xi_over_lam, log_F_m, log_int_F2 */
+#define ZS__NFSUM 8  /* delta_m, tau_dc, log_tau_d, log_e, xi_over_lam, log_F_m, log_int_F2,
+                        log_tau_p */
 #define ZS__BLOCK 256 /* points per block of a history */
 #define ZS__NSUM 6   /* delta_m, tau_dc, log_tau_d, log_e, int_F2, rest_over_lam */
 
-/* one coefficient matrix [rows: time degree][cols: lambda degree], Chebyshev in both */
+/* one sub-piece's history: [cols: lambda degree, Chebyshev][rows: power of x][2 fields] */
 typedef struct {
     int rows, cols;
     const double *c;
 } zs__mat;
 
-/* one time piece of the history: per lambda piece and sub-piece a matrix for f and for I */
+/* one time piece of the history: per lambda piece and sub-piece a matrix */
 typedef struct {
     int n_sub;
-    const zs__mat *f, *I;
+    const zs__mat *m;
 } zs__tpiece;
 
 /* the summary of a force-free-end table (generated/exact_force_table.py): Chebyshev variable
@@ -111,18 +113,19 @@ typedef struct {
     const double *edges, *ga, *gb;
     const int *log_piece;
     double lam_min, lam_max;
-    const double *const *sum;   /* [piece * ZS__NFSUM + field] */
+    const double *const *sum;   /* per piece [degree][ZS__NFSUM field] */
     const int *sum_len;
+    zs__tpiece piece[2];        /* C, R; fields f and v = delta' */
 } zs__force_table;
 
 /* an exact table (the layout of generated/exact_table.py) */
 typedef struct {
     int n_lam, n_hist;          /* lambda pieces; those with a history table */
-    const double *edges, *ga, *gb;
+    const double *edges, *ga, *gb, *xk, *xo; /* x = (2 g - ga - gb) / (gb - ga) ~ g xk - xo */
     const int *log_piece;       /* Chebyshev variable ln lambda (1) or lambda (0) */
     double lam_min, lam_max, hist_max;
     double log_from, c_stretch, c_end, s_orbit, s_transient;
-    const double *const *sum;   /* [piece * ZS__NSUM + field] */
+    const double *const *sum;   /* per piece [degree][ZS__NSUM field] */
     const int *sum_len;
     zs__tpiece piece[4];        /* C, A, M, B */
 } zs__exact_table;
@@ -150,8 +153,35 @@ static void zs__summary_nan(double lam, zs_summary_t *out)
     out->F_m = out->impulse = out->int_F2 = out->xi = q;
 }
 
-/* monomial coefficients of T_j on [-1, 1]: zs__cheb2poly[j][i] is the coefficient of x^i */
-@CHEB2POLY@
+
+/* T_0(x) .. T_{deg-1}(x). recurrence: T_j = 2x T_{j-1} - T_{j-2}, as numpy's chebvander
+   (the same doubles as Python: a history's piece ends then fall where Python's do). Else, for a
+   summary alone, the same values to a few ulps with a shorter dependency chain: T_2 .. T_7 from
+   T_{m+n} = 2 T_m T_n - T_{|m-n|}, then four interleaved chains T_j = 2 T_4 T_{j-4} - T_{j-8}
+   (the one-step recurrence waits on a multiply and a subtraction per degree, most of a
+   summary's time) */
+static void zs__cheb_T(double x, int deg, int recurrence, double *T)
+{
+    int j;
+    double x2 = 2.0 * x, t4;
+    T[0] = 1.0;
+    if (deg > 1)
+        T[1] = x;
+    if (recurrence || deg <= 8) {
+        for (j = 2; j < deg; j++)
+            T[j] = T[j - 1] * x2 - T[j - 2];
+        return;
+    }
+    T[2] = x2 * x - 1.0;
+    T[3] = x2 * T[2] - x;
+    T[4] = 2.0 * T[2] * T[2] - 1.0;
+    T[5] = 2.0 * T[2] * T[3] - x;
+    T[6] = 2.0 * T[3] * T[3] - 1.0;
+    T[7] = 2.0 * T[3] * T[4] - x;
+    t4 = 2.0 * T[4];
+    for (j = 8; j < deg; j++)
+        T[j] = t4 * T[j - 4] - T[j - 8];
+}
 
 /* the summary fields of one lambda (exact.table._core) */
 typedef struct {
@@ -163,44 +193,83 @@ typedef struct {
 
 static void zs__core(const zs__exact_table *t, double lam, int history, zs__core_t *c)
 {
-    int last = (history ? t->n_hist : t->n_lam) - 1, i, j, f, deg = 0;
-    double g, a, b, x, x2, T[ZS__MAX_SUM], xi, e_direct;
-    /* piece: searchsorted(edges, lam, 'right') - 1, clipped */
-    i = -1;
-    for (j = 0; j <= t->n_lam; j++)
-        if (t->edges[j] <= lam)
-            i = j;
-    if (i < 0)
-        i = 0;
-    if (i > last)
-        i = last;
+    int last = (history ? t->n_hist : t->n_lam) - 1, i, j, deg = 0;
+    double g, a, b, x, T[ZS__MAX_SUM], xi, e_direct;
+    /* piece: searchsorted(edges, lam, 'right') - 1, clipped to [0, last] (lam >= edges[0]);
+       an early exit the branch predictor learns, not a scan every call waits on */
+    i = 0;
+    while (i < last && t->edges[i + 1] <= lam)
+        i++;
     g = t->log_piece[i] ? log(lam) : lam;
     a = t->ga[i];
     b = t->gb[i];
-    x = (2.0 * g - a - b) / (b - a);
+    /* a history: Python's division (the same x, the same piece ends); a summary: the division
+       folded into two constants (within an ulp or two of x, off the summary's critical path) */
+    x = history ? (2.0 * g - a - b) / (b - a) : g * t->xk[i] - t->xo[i];
     if (x < -1.0)
         x = -1.0;
     if (x > 1.0)
         x = 1.0;
-    for (f = 0; f < ZS__NSUM; f++)
-        if (t->sum_len[i * ZS__NSUM + f] > deg)
-            deg = t->sum_len[i * ZS__NSUM + f];
-    /* T_k(x) by the recurrence and each sum in order of k, as numpy's chebvander and
-       exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
+    deg = t->sum_len[i];
+    /* for a history T_k(x) by the recurrence and each sum in order of k, as numpy's chebvander
+       and exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
        tau_w0, tau_d) falls in the same piece on both sides */
-    T[0] = 1.0;
-    if (deg > 1)
-        T[1] = x;
-    x2 = 2.0 * x;
-    for (j = 2; j < deg; j++)
-        T[j] = T[j - 1] * x2 - T[j - 2];
-    for (f = 0; f < ZS__NSUM; f++) {
-        const double *cf = t->sum[i * ZS__NSUM + f];
-        int n = t->sum_len[i * ZS__NSUM + f];
-        double s = T[0] * cf[0];
-        for (j = 1; j < n; j++)
-            s += T[j] * cf[j];
-        c->v[f] = s;
+    zs__cheb_T(x, deg, history, T);
+    {  /* every field's sum in order of degree, the fields side by side (the block is
+           [degree][field], zero-padded) */
+        /* one named accumulator a field (an array would be kept in memory, every addition
+           then waiting on a store); T[0] = 1 */
+        const double *cf = t->sum[i];
+        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5];
+        if (history) { /* in order of degree, as Python */
+            for (j = 1; j < deg; j++) {
+                const double *r = cf + j * ZS__NSUM, tj = T[j];
+                a0 += tj * r[0];
+                a1 += tj * r[1];
+                a2 += tj * r[2];
+                a3 += tj * r[3];
+                a4 += tj * r[4];
+                a5 += tj * r[5];
+            }
+            c->v[0] = a0;
+            c->v[1] = a1;
+            c->v[2] = a2;
+            c->v[3] = a3;
+            c->v[4] = a4;
+            c->v[5] = a5;
+        } else { /* odd and even degrees apart: half the chain of dependent additions */
+            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0;
+            for (j = 1; j + 1 < deg; j += 2) {
+                const double *r = cf + j * ZS__NSUM, ta = T[j], tb = T[j + 1];
+                a0 += ta * r[0];
+                b0 += tb * r[ZS__NSUM + 0];
+                a1 += ta * r[1];
+                b1 += tb * r[ZS__NSUM + 1];
+                a2 += ta * r[2];
+                b2 += tb * r[ZS__NSUM + 2];
+                a3 += ta * r[3];
+                b3 += tb * r[ZS__NSUM + 3];
+                a4 += ta * r[4];
+                b4 += tb * r[ZS__NSUM + 4];
+                a5 += ta * r[5];
+                b5 += tb * r[ZS__NSUM + 5];
+            }
+            if (j < deg) {
+                const double *r = cf + j * ZS__NSUM, ta = T[j];
+                a0 += ta * r[0];
+                a1 += ta * r[1];
+                a2 += ta * r[2];
+                a3 += ta * r[3];
+                a4 += ta * r[4];
+                a5 += ta * r[5];
+            }
+            c->v[0] = a0 + b0;
+            c->v[1] = a1 + b1;
+            c->v[2] = a2 + b2;
+            c->v[3] = a3 + b3;
+            c->v[4] = a4 + b4;
+            c->v[5] = a5 + b5;
+        }
     }
     c->ip = i;
     c->x = x;
@@ -222,43 +291,94 @@ static const zs__force_table *zs__force_table_of(int contact_end)
 }
 
 /* the force-free end's summary fields of one lambda (exact.force_table._core) */
-static void zs__force_core(const zs__force_table *t, double lam, double v[ZS__NFSUM],
-                           double *e, double *xi)
+static void zs__force_core(const zs__force_table *t, double lam, int history,
+                           double v[ZS__NFSUM], double *e, double *xi, int *ip, double *xl)
 {
-    int i = -1, j, f, deg = 0;
-    double g, x, x2, T[ZS__MAX_FSUM];
-    for (j = 0; j <= t->n_lam; j++)
-        if (t->edges[j] <= lam)
-            i = j;
-    if (i < 0)
-        i = 0;
-    if (i > t->n_lam - 1)
-        i = t->n_lam - 1;
+    int i, j, deg = 0;
+    double g, x, T[ZS__MAX_FSUM];
+    i = 0; /* searchsorted(edges, lam, 'right') - 1, clipped (lam >= edges[0]) */
+    while (i < t->n_lam - 1 && t->edges[i + 1] <= lam)
+        i++;
     g = t->log_piece[i] ? log(lam) : sqrt(lam);
     x = (2.0 * g - t->ga[i] - t->gb[i]) / (t->gb[i] - t->ga[i]);
     if (x < -1.0)
         x = -1.0;
     if (x > 1.0)
         x = 1.0;
-    for (f = 0; f < ZS__NFSUM; f++)
-        if (t->sum_len[i * ZS__NFSUM + f] > deg)
-            deg = t->sum_len[i * ZS__NFSUM + f];
-    T[0] = 1.0;
-    if (deg > 1)
-        T[1] = x;
-    x2 = 2.0 * x;
-    for (j = 2; j < deg; j++)
-        T[j] = T[j - 1] * x2 - T[j - 2];
-    for (f = 0; f < ZS__NFSUM; f++) {
-        const double *cf = t->sum[i * ZS__NFSUM + f];
-        int n = t->sum_len[i * ZS__NFSUM + f];
-        double s = T[0] * cf[0];
-        for (j = 1; j < n; j++)
-            s += T[j] * cf[j];
-        v[f] = s;
+    deg = t->sum_len[i];
+    zs__cheb_T(x, deg, history, T);
+    {  /* every field's sum in order of degree, the fields side by side (the block is
+           [degree][field], zero-padded) */
+        /* one named accumulator a field (an array would be kept in memory, every addition
+           then waiting on a store); T[0] = 1 */
+        const double *cf = t->sum[i];
+        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5], a6 = cf[6], a7 = cf[7];
+        if (history) { /* in order of degree, as Python */
+            for (j = 1; j < deg; j++) {
+                const double *r = cf + j * ZS__NFSUM, tj = T[j];
+                a0 += tj * r[0];
+                a1 += tj * r[1];
+                a2 += tj * r[2];
+                a3 += tj * r[3];
+                a4 += tj * r[4];
+                a5 += tj * r[5];
+                a6 += tj * r[6];
+                a7 += tj * r[7];
+            }
+            v[0] = a0;
+            v[1] = a1;
+            v[2] = a2;
+            v[3] = a3;
+            v[4] = a4;
+            v[5] = a5;
+            v[6] = a6;
+            v[7] = a7;
+        } else { /* odd and even degrees apart: half the chain of dependent additions */
+            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0, b6 = 0.0, b7 = 0.0;
+            for (j = 1; j + 1 < deg; j += 2) {
+                const double *r = cf + j * ZS__NFSUM, ta = T[j], tb = T[j + 1];
+                a0 += ta * r[0];
+                b0 += tb * r[ZS__NFSUM + 0];
+                a1 += ta * r[1];
+                b1 += tb * r[ZS__NFSUM + 1];
+                a2 += ta * r[2];
+                b2 += tb * r[ZS__NFSUM + 2];
+                a3 += ta * r[3];
+                b3 += tb * r[ZS__NFSUM + 3];
+                a4 += ta * r[4];
+                b4 += tb * r[ZS__NFSUM + 4];
+                a5 += ta * r[5];
+                b5 += tb * r[ZS__NFSUM + 5];
+                a6 += ta * r[6];
+                b6 += tb * r[ZS__NFSUM + 6];
+                a7 += ta * r[7];
+                b7 += tb * r[ZS__NFSUM + 7];
+            }
+            if (j < deg) {
+                const double *r = cf + j * ZS__NFSUM, ta = T[j];
+                a0 += ta * r[0];
+                a1 += ta * r[1];
+                a2 += ta * r[2];
+                a3 += ta * r[3];
+                a4 += ta * r[4];
+                a5 += ta * r[5];
+                a6 += ta * r[6];
+                a7 += ta * r[7];
+            }
+            v[0] = a0 + b0;
+            v[1] = a1 + b1;
+            v[2] = a2 + b2;
+            v[3] = a3 + b3;
+            v[4] = a4 + b4;
+            v[5] = a5 + b5;
+            v[6] = a6 + b6;
+            v[7] = a7 + b7;
+        }
     }
     *xi = lam * v[4];
     *e = *xi < 0.5 ? sqrt(1.0 - *xi > 0.0 ? 1.0 - *xi : 0.0) : exp(v[3]);
+    *ip = i;
+    *xl = x;
 }
 
 static int zs__contact_end_ok(int contact_end)
@@ -276,12 +396,13 @@ int zs_summary(double lam, int contact_end, zs_summary_t *out)
     t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
     if (t == NULL && zs__contact_end_ok(contact_end) && zs__force_table_of(contact_end) != NULL) {
         const zs__force_table *ft = zs__force_table_of(contact_end);
-        double v[ZS__NFSUM], e, xi;
+        double v[ZS__NFSUM], e, xi, x;
+        int ip;
         if (!(lam >= ft->lam_min && lam <= ft->lam_max)) {
             zs__summary_nan(lam, out);
             return ZS_EDOM;
         }
-        zs__force_core(ft, lam, v, &e, &xi);
+        zs__force_core(ft, lam, 0, v, &e, &xi, &ip, &x);
         out->lam = lam;
         out->delta_m = v[0];
         out->tau_dc = v[1];
@@ -338,38 +459,45 @@ static void zs__fill_nan(size_t n, double *a)
 /* the per-call state of one time piece: its map's constants and its sub-pieces' monomial
    coefficients in x (f and I side by side), contracted in lambda when first needed */
 typedef struct {
-    double a, u0, s, e, i1, i2, i3, d;
+    double a, u0, s, e, i1, i2, i3, d, ra;
     int deg[ZS__MAX_SUB];                   /* 0: not contracted yet */
     double m[ZS__MAX_SUB][ZS__MAX_ROWS][2];
 } zs__piece_t;
 
 static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl, zs__piece_t *P)
 {
-    double c[2][ZS__MAX_ROWS];
-    int fld, j, k, i, deg = 1; /* an empty matrix counts as the polynomial 0 */
-    for (fld = 0; fld < 2; fld++) {
-        const zs__mat *m = (fld == 0 ? tp->f : tp->I) + ip * tp->n_sub + sub;
-        for (j = 0; j < ZS__MAX_ROWS; j++)
-            c[fld][j] = 0.0;
-        /* k outer: each row's sum is its own accumulator, so the rows' additions overlap (one
-           row at a time waits on every addition's latency) */
-        for (k = 0; k < m->cols; k++) {
-            const double *col = m->c + k, tk = Tl[k];
-            for (j = 0; j < m->rows; j++)
-                c[fld][j] += col[j * m->cols] * tk;
-        }
-        if (m->rows > deg)
-            deg = m->rows;
+    const zs__mat *m = tp->m + ip * tp->n_sub + sub;
+    double (*o)[2] = P->m[sub];
+    int j, k, n = m->rows;
+    double acc[2 * ZS__MAX_ROWS]; /* a local the table cannot alias: the pairs vectorise */
+    if (n == 0) { /* no coefficients: the polynomial 0 */
+        o[0][0] = o[0][1] = 0.0;
+        P->deg[sub] = 1;
+        return;
     }
-    /* Chebyshev -> monomial in x (exact.table._history_layout) */
-    for (i = 0; i < deg; i++)
-        for (fld = 0; fld < 2; fld++) {
-            double s = 0.0;
-            for (j = i; j < deg; j++)
-                s += zs__cheb2poly[j][i] * c[fld][j];
-            P->m[sub][i][fld] = s;
-        }
-    P->deg[sub] = deg;
+    /* sum over the lambda degree k in order; the rows of field pairs are contiguous, so the
+       two fields' multiply-adds go as one pair (and the rows' sums overlap) */
+    for (j = 0; j < 2 * n; j++)
+        acc[j] = m->c[j] * Tl[0];
+    for (k = 1; k < m->cols; k++) {
+        const double *c = m->c + (size_t)k * 2 * (size_t)n, tk = Tl[k];
+        for (j = 0; j < 2 * n; j++)
+            acc[j] += c[j] * tk;
+    }
+    for (j = 0; j < n; j++) {
+        o[j][0] = acc[2 * j];
+        o[j][1] = acc[2 * j + 1];
+    }
+    P->deg[sub] = n;
+}
+
+/* ln(1 + r) for r > -1 to a few ulps relative (Goldberg, "What every computer scientist should
+   know about floating-point arithmetic", Thm. 4): libm's log of w = 1 + r, times r / (w - 1),
+   which undoes the rounding of w. libm's log1p is twice log's time, most of a history point's */
+static double zs__log1p(double r)
+{
+    double w = 1.0 + r;
+    return w == 1.0 ? r : log(w) * (r / (w - 1.0));
 }
 
 /* constants of the lin_log map of piece A or M (exact.table._scaled_maps) */
@@ -388,6 +516,89 @@ static void zs__lin_log(zs__piece_t *P, int k, double start, double end, double 
     P->i3 = 1.0 / c3;
 }
 
+/* the force-free end's history (exact.force_table.history): time piece C, tau <= tau_dc,
+   y = sqrt(tau / tau_dc), delta = tau exp(f); piece R, tau_dc < tau < tau_d, on ln-lambda pieces
+   y linear in tau and delta = exp(f), on sqrt-lambda pieces y = (1 - sqrt((tau_P - tau) /
+   (tau_P - tau_dc))) / (1 - z_end) and delta = (tau_P - tau) exp(f), tau_P the plate end's
+   tau_d (the series log_tau_p) that the recovery is anchored on; v = delta' tabulated */
+static int zs__force_history(const zs__force_table *t, double lam, size_t n, const double *tau,
+                             double *delta, double *velocity, double *force, double *impulse)
+{
+    double v[ZS__NFSUM], e, xi, xl, Tl[ZS__MAX_LAMDEG], tau_dc, tau_d, tau_p = HUGE_VAL;
+    double r_a, r_b = 0.0, c_a, lam_1 = 1.5 * lam;
+    int ip, lg, p, s, k[2];
+    zs__piece_t P[2];
+    size_t i;
+    zs__force_core(t, lam, 1, v, &e, &xi, &ip, &xl);
+    lg = t->log_piece[ip];
+    tau_dc = v[1];
+    tau_d = exp(v[2]);
+    if (lg) {
+        r_a = 1.0 / (tau_d - tau_dc);
+    } else {
+        /* z at tau_d of tau = tau_P - (tau_P - tau_dc) z^2, clipped at 0: at lambda = 0 tau_d
+           and tau_P are the same time, each to rounding (force_table_layout.recovery_z_end) */
+        double gap = tau_p = exp(v[7]);
+        gap -= tau_d;
+        r_b = 1.0 / (tau_p - tau_dc);
+        r_a = 1.0 / (1.0 - sqrt((gap > 0.0 ? gap : 0.0) * r_b));
+    }
+    c_a = 1.0 / tau_dc;
+    Tl[0] = 1.0;
+    Tl[1] = xl;
+    for (s = 2; s < ZS__MAX_LAMDEG; s++)
+        Tl[s] = Tl[s - 1] * 2.0 * xl - Tl[s - 2];
+    for (p = 0; p < 2; p++) {
+        k[p] = t->piece[p].n_sub;
+        for (s = 0; s < ZS__MAX_SUB; s++)
+            P[p].deg[s] = 0;
+    }
+    for (i = 0; i < n; i++) {
+        double tt = tau[i], d = 0.0, vel = -e, gap = 1.0, z, x;
+        double (*m)[2];
+        int sub, j;
+        if (tt < tau_d || tt <= tau_dc) {
+            if (tt <= tau_dc) {
+                p = 0;
+                z = sqrt(tt * c_a) * k[0];
+            } else if (lg) {
+                p = 1;
+                z = (tt - tau_dc) * r_a * k[1];
+            } else {
+                p = 1;
+                gap = tau_p - tt;
+                if (!(gap > 0.0))
+                    gap = 0.0;
+                z = r_a * (1.0 - sqrt(gap * r_b)) * k[1];
+            }
+            /* the sub-piece, as numpy's astype(intp) then clip: a z rounded below 0 stays in
+               the first sub-piece (its x a hair below -1), past k in the last */
+            sub = z >= 0.0 ? (z < (double)k[p] ? (int)z : k[p] - 1) : 0;
+            x = 2.0 * (z - sub) - 1.0;
+            if (P[p].deg[sub] == 0)
+                zs__contract(&t->piece[p], ip, sub, Tl, &P[p]);
+            m = P[p].m[sub];
+            j = P[p].deg[sub] - 1;
+            d = m[j][0];
+            vel = m[j][1];
+            for (j = j - 1; j >= 0; j--) {
+                d = d * x + m[j][0];
+                vel = vel * x + m[j][1];
+            }
+            d = exp(d) * (p == 0 ? tt : gap);
+        }
+        if (delta != NULL)
+            delta[i] = d;
+        if (velocity != NULL)
+            velocity[i] = vel;
+        if (force != NULL)
+            force[i] = sqrt(d) * (d + lam_1 * vel);
+        if (impulse != NULL)
+            impulse[i] = 1.0 - vel;
+    }
+    return ZS_OK;
+}
+
 int zs_history(double lam, int contact_end, size_t n, const double *tau,
                double *delta, double *velocity, double *force, double *impulse)
 {
@@ -398,6 +609,11 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
     int p, s, log_piece;
     size_t i0;
     t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
+    if (t == NULL && zs__contact_end_ok(contact_end)) {
+        const zs__force_table *ft = zs__force_table_of(contact_end);
+        if (ft != NULL && lam >= ft->lam_min && lam <= ft->lam_max && zs__tau_ok(n, tau))
+            return zs__force_history(ft, lam, n, tau, delta, velocity, force, impulse);
+    }
     if (t == NULL || !(lam >= t->lam_min && lam <= t->hist_max) || !zs__tau_ok(n, tau)) {
         zs__fill_nan(n, delta);
         zs__fill_nan(n, velocity);
@@ -428,13 +644,16 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
         zs__lin_log(&P[2], t->piece[2].n_sub, tau_s, c.tau_w0, inf, lam, lam);
     P[3].a = t->piece[3].n_sub * (double)t->piece[3].n_sub / (c.tau_d - c.tau_w0);
     P[3].d = c.tau_d;
+    /* 1 / sqrt(a) of the square-root maps: sqrt(tau) = z / sqrt(a) for the force */
+    P[0].ra = 1.0 / sqrt(P[0].a);
+    P[3].ra = 1.0 / sqrt(P[3].a);
     imp_end = 1.0 + c.e;
     /* blocks of points in three passes (piece and local variable; Horner; exp and outputs):
        the Horner pass has no calls, so the processor overlaps the points' chains */
     for (i0 = 0; i0 < n; i0 += ZS__BLOCK) {
         size_t nb = n - i0 < ZS__BLOCK ? n - i0 : ZS__BLOCK, b;
         int pc[ZS__BLOCK], sb[ZS__BLOCK];
-        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK];
+        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK], zr[ZS__BLOCK];
         for (b = 0; b < nb; b++) {
             double tt = tau[i0 + b], z;
             int k, sub;
@@ -450,8 +669,10 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             k = t->piece[p].n_sub;
             if (p == 0) {
                 z = sqrt(tt * Q->a);
+                zr[b] = z;
             } else if (p == 3) {
                 z = sqrt((Q->d - tt) * Q->a);
+                zr[b] = z;
             } else {
                 /* u = ln(1 + p) + ts i3 - ln(1 + q), p = ts i1, q = te i2 (table_build.lin_log),
                    the logarithms as one, ln(1 + (p - q) / (1 + q)): log1p of a small argument
@@ -461,7 +682,7 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
                 z = -Q->u0;
                 if (Q->i3 != 0.0)
                     z += ts * Q->i3;
-                z += log1p((pp - qq) / (1.0 + qq));
+                z += zs__log1p((pp - qq) / (1.0 + qq));
                 z *= Q->a;
             }
             if (!(z >= 0.0)) /* rounding at a piece's start (or a NaN): the first sub-piece */
@@ -493,16 +714,23 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             Iv[b] = I;
         }
         for (b = 0; b < nb; b++) {
-            double tt = tau[i0 + b], d, I = Iv[b];
+            double tt = tau[i0 + b], d, sd, I = Iv[b];
             p = pc[b];
+            /* h = exp(f / 2): delta = h^2 (times tau or tau_d - tau), and sqrt(delta) for the
+               force without a square root (the maps' z = sqrt(a tau) gives sqrt(tau)) */
             if (p == 4) {
-                d = 0.0;
+                d = sd = 0.0;
             } else {
-                d = exp(fv[b]);
-                if (p == 0)
+                double h = exp(0.5 * fv[b]);
+                d = h * h;
+                sd = h;
+                if (p == 0) {
                     d *= tt;
-                else if (p == 3)
+                    sd *= zr[b] * P[0].ra;
+                } else if (p == 3) {
                     d *= P[3].d - tt;
+                    sd *= zr[b] * P[3].ra;
+                }
             }
             if (delta != NULL)
                 delta[i0 + b] = d;
@@ -511,7 +739,7 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             if (velocity != NULL)
                 velocity[i0 + b] = 1.0 - I;
             if (force != NULL)
-                force[i0 + b] = sqrt(d) * d;
+                force[i0 + b] = sd * d;
         }
     }
     return ZS_OK;
@@ -528,8 +756,9 @@ static double zs__q_of(const zs__exact_table *t, const zs__force_table *ft, doub
         zs__core(t, lam, 0, &c);
         return use_xi ? 2.0 * lam * c.v[4] : -c.e;
     } else {
-        double v[ZS__NFSUM], e, xi;
-        zs__force_core(ft, lam, v, &e, &xi);
+        double v[ZS__NFSUM], e, xi, x;
+        int ip;
+        zs__force_core(ft, lam, 0, v, &e, &xi, &ip, &x);
         return use_xi ? xi : -e;
     }
 }

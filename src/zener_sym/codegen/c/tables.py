@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import runpy
+from fractions import Fraction
 
 import mpmath
 
@@ -70,60 +71,24 @@ def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
     gb = [_log_rounded(b) if lg else b for b, lg in zip(edges[1:], log)]
     p = f"zs__{name}"
     out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n",
-           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
-    # summary: per lambda piece, per field, its Chebyshev coefficients
+           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb),
+           # x = g k - o, a summary's piece variable without a division (IEEE operations on the
+           # written doubles: the same on every machine)
+           _array(f"{p}_xk", [2.0 / (b - a) for a, b in zip(ga, gb)]),
+           _array(f"{p}_xo", [(a + b) / (b - a) for a, b in zip(ga, gb)])]
+    # summary: per lambda piece, its fields' Chebyshev coefficients interleaved
     sizes = {"max_lamdeg": 0, "max_rows": 0, "max_sub": 0, "max_sum": 0}
-    sum_ptr, sum_len = [], []
-    for ip in range(n_lam):
-        for key in EXACT_SUMMARY_KEYS:
-            c = ns["SUMMARY"][key][ip]
-            out.append(_array(f"{p}_s{ip}_{key}", c))
-            sum_ptr.append(f"{p}_s{ip}_{key}")
-            sum_len.append(str(len(c)))
-            sizes["max_sum"] = max(sizes["max_sum"], len(c))
-    out.append(f"static const double *const {p}_sum[{len(sum_ptr)}] = {{{', '.join(sum_ptr)}}};\n")
-    out.append(f"static const int {p}_sum_len[{len(sum_len)}] = {{{', '.join(sum_len)}}};\n")
+    sizes["max_sum"] = _summary_blocks(p, ns, EXACT_SUMMARY_KEYS, n_lam, out)
     # history: per time piece and field, per lambda piece and sub-piece, a [rows][cols] matrix
-    pieces_c = []
     n_hist = sum(1 for b in edges[1:] if b <= hist_to)
-    for tp in TIME_PIECES:
-        n_sub = int(ns["N_SUB"][tp])
-        sizes["max_sub"] = max(sizes["max_sub"], n_sub)
-        mats = {}
-        for fld in ("f", "I"):
-            per = ns["HISTORY"][(tp, fld)]
-            entries = []
-            for ip in range(n_lam):
-                subs = per[ip] if ip < len(per) else ()
-                if not len(subs):
-                    entries.extend(["{0, 0, NULL}"] * n_sub)
-                    continue
-                if len(subs) != n_sub:
-                    raise ValueError(f"table {name}: piece {tp} has {len(subs)} sub-pieces, "
-                                     f"N_SUB says {n_sub}")
-                for s, text in enumerate(subs):
-                    parts = text.split()
-                    rows, cols = int(parts[0]), int(parts[1])
-                    vals = parts[2:]
-                    if len(vals) != rows * cols:
-                        raise ValueError(f"table {name}: malformed array {tp}/{fld}/{ip}/{s}")
-                    arr = f"{p}_{tp}{fld}_{ip}_{s}"
-                    out.append(_array(arr, [v if ("." in v or "e" in v) else v + ".0"
-                                            for v in vals], per_line=8))
-                    entries.append(f"{{{rows}, {cols}, {arr}}}")
-                    sizes["max_rows"] = max(sizes["max_rows"], rows)
-                    sizes["max_lamdeg"] = max(sizes["max_lamdeg"], cols)
-            mats[fld] = f"{p}_{tp}{fld}"
-            out.append(f"static const zs__mat {p}_{tp}{fld}[{len(entries)}] = {{\n    "
-                       + ",\n    ".join(entries) + "\n};\n")
-        pieces_c.append(f"{{{n_sub}, {mats['f']}, {mats['I']}}}")
+    pieces_c = _history_c(name, p, ns, TIME_PIECES, ("f", "I"), n_lam, out, sizes)
     logs = ", ".join("1" if lg else "0" for lg in log)
     out.append(f"static const int {p}_log[{n_lam}] = {{{logs}}};\n")
     for key in ("max_lamdeg", "max_sum"):
         sizes[key] = max(sizes[key], 2)
     out.append(
         f"static const zs__exact_table zs__tab_{name} = {{\n"
-        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_log,\n"
+        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_xk, {p}_xo, {p}_log,\n"
         f"    {num(edges[0])}, {num(edges[-1])}, {num(hist_to)},\n"
         f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
         f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"
@@ -131,6 +96,100 @@ def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
         f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
     return "".join(out), sizes
 
+
+def _summary_blocks(p, ns, keys, n_lam, out) -> int:
+    """Append per lambda piece one block [degree][field] of the summary series ``keys``
+    (interleaved, each zero-padded to the piece's longest: a padded term adds an exact 0, so
+    each field's sum in order of degree is unchanged), the arrays ``<p>_sum`` (their pointers)
+    and ``<p>_sum_len`` (their degrees); return the largest degree. The C loop over degrees then
+    carries every field's sum at once (independent additions the processor overlaps)."""
+    ptrs, lens, top = [], [], 0
+    for ip in range(n_lam):
+        cs = [list(ns["SUMMARY"][key][ip]) for key in keys]
+        deg = max(len(c) for c in cs)
+        vals = [c[j] if j < len(c) else 0.0 for j in range(deg) for c in cs]
+        out.append(_array(f"{p}_s{ip}", vals, per_line=len(keys)))
+        ptrs.append(f"{p}_s{ip}")
+        lens.append(str(deg))
+        top = max(top, deg)
+    out.append(f"static const double *const {p}_sum[{n_lam}] = {{{', '.join(ptrs)}}};\n"
+               f"static const int {p}_sum_len[{n_lam}] = {{{', '.join(lens)}}};\n")
+    return top
+
+
+def _cheb_to_monomial_exact(n: int) -> list[list[Fraction]]:
+    """[power i][Chebyshev degree j]: the (integer) monomial coefficients of T_j on [-1, 1]."""
+    rows = [[Fraction(0)] * n for _ in range(n)]
+    prev, cur = [1], [0, 1]  # T_0, T_1 as monomial coefficient lists
+    polys = [prev, cur]
+    for _ in range(2, n):
+        nxt = [0] + [2 * c for c in cur]
+        for i, c in enumerate(prev):
+            nxt[i] -= c
+        prev, cur = cur, nxt
+        polys.append(cur)
+    for j in range(n):
+        for i, c in enumerate(polys[j]):
+            rows[i][j] = Fraction(c)
+    return rows
+
+
+def _to_monomial(vals: list[str], rows: int, cols: int, conv) -> list[list[float]]:
+    """A [rows: Chebyshev degree in time][cols: lambda degree] matrix (the file's digits) as
+    [time power][lambda degree]: each coefficient the exact sum, rounded once (machine
+    independent; ``exact.table._history_layout`` does the same conversion in float64)."""
+    c = [[Fraction(float(vals[j * cols + k])) for k in range(cols)] for j in range(rows)]
+    return [[float(sum(conv[i][j] * c[j][k] for j in range(i, rows))) for k in range(cols)]
+            for i in range(rows)]
+
+
+def _history_c(name, p, ns, pieces, keys, n_lam, out, sizes) -> list[str]:
+    """Append to ``out`` the history of every time piece and return the ``zs__tpiece``
+    initialisers, in ``pieces`` order. Per lambda piece and sub-piece one matrix
+    [lambda degree k][time power j][field] (``keys``' two fields interleaved, zero-padded to the
+    larger degrees): the time direction converted from Chebyshev to monomials in the
+    sub-piece's x here, once, so the C code only contracts in lambda (per call, contiguous rows
+    of field pairs) and evaluates Horner's rule per point. A lambda piece without history gets
+    empty entries. ``sizes`` is updated."""
+    pieces_c = []
+    convs = {}
+    for tp in pieces:
+        n_sub = int(ns["N_SUB"][tp])
+        sizes["max_sub"] = max(sizes["max_sub"], n_sub)
+        per = [ns["HISTORY"][(tp, fld)] for fld in keys]
+        entries = []
+        for ip in range(n_lam):
+            subs = [f[ip] if ip < len(f) else () for f in per]
+            if not len(subs[0]) and not len(subs[1]):
+                entries.extend(["{0, 0, NULL}"] * n_sub)
+                continue
+            for fld, sb in zip(keys, subs):
+                if len(sb) != n_sub:
+                    raise ValueError(f"table {name}: piece {tp}/{fld} has {len(sb)} sub-pieces, "
+                                     f"N_SUB says {n_sub}")
+            for s in range(n_sub):
+                mats = []
+                for fld, sb in zip(keys, subs):
+                    parts = sb[s].split()
+                    rows, cols = int(parts[0]), int(parts[1])
+                    if len(parts) - 2 != rows * cols:
+                        raise ValueError(f"table {name}: malformed array {tp}/{fld}/{ip}/{s}")
+                    if rows not in convs:
+                        convs[rows] = _cheb_to_monomial_exact(rows)
+                    mats.append(_to_monomial(parts[2:], rows, cols, convs[rows]))
+                R = max(len(m) for m in mats)
+                K = max(len(m[0]) for m in mats)
+                vals = [m[j][k] if j < len(m) and k < len(m[j]) else 0.0
+                        for k in range(K) for j in range(R) for m in mats]
+                arr = f"{p}_{tp}_{ip}_{s}"
+                out.append(_array(arr, vals, per_line=6))
+                entries.append(f"{{{R}, {K}, {arr}}}")
+                sizes["max_rows"] = max(sizes["max_rows"], R)
+                sizes["max_lamdeg"] = max(sizes["max_lamdeg"], K)
+        out.append(f"static const zs__mat {p}_{tp}[{len(entries)}] = {{\n    "
+                   + ",\n    ".join(entries) + "\n};\n")
+        pieces_c.append(f"{{{n_sub}, {p}_{tp}}}")
+    return pieces_c
 
 def ham1_table_c(ns: dict) -> tuple[str, int]:
     """C text of the ham1 summary table (``zs__h1_*``), and its largest degree."""
@@ -164,12 +223,21 @@ def ham1_table_c(ns: dict) -> tuple[str, int]:
 
 #: Summary fields of a force-free-end table the C code reads (zs__F_* order).
 FORCE_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m",
-                      "log_int_F2")
+                      "log_int_F2", "log_tau_p")
+#: Time pieces and fields of a force-free-end history, in the C code's order.
+FORCE_TIME_PIECES = ("C", "R")
+FORCE_HISTORY_KEYS = ("f", "v")
 
 
-def force_summary_c(name: str, ns: dict) -> tuple[str, int]:
-    """C text defining ``static const zs__force_table zs__ftab_<name>`` (the summary of a
-    force-free-end table: sqrt(lambda) below LOG_FROM, ln lambda above), and its largest degree."""
+def force_table_c(name: str, ns: dict) -> tuple[str, dict]:
+    """C text defining ``static const zs__force_table zs__ftab_<name>`` (a force-free-end table,
+    ``generated/exact_force_table.py`` layout: summary in sqrt(lambda) below LOG_FROM, ln lambda
+    above; history in time pieces C and R, fields f and v), and its sizes."""
+    if (tuple(ns.get("TIME_PIECES", ())) != FORCE_TIME_PIECES
+            or tuple(ns.get("HISTORY_KEYS", ())) != FORCE_HISTORY_KEYS):
+        raise ValueError(f"force table {name}: time pieces {ns.get('TIME_PIECES')}, fields "
+                         f"{ns.get('HISTORY_KEYS')}; the C runtime evaluates "
+                         f"{FORCE_TIME_PIECES} with {FORCE_HISTORY_KEYS}")
     keys = tuple(ns.get("SUMMARY_KEYS", ()))
     missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
     if missing:
@@ -187,19 +255,13 @@ def force_summary_c(name: str, ns: dict) -> tuple[str, int]:
     p = f"zs__f{name}"
     out = [f"/* ---- force-free-end summary table '{name}' ---- */\n",
            _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
-    ptrs, lens, deg = [], [], 2
-    for ip in range(n_lam):
-        for key in FORCE_SUMMARY_KEYS:
-            c = ns["SUMMARY"][key][ip]
-            out.append(_array(f"{p}_s{ip}_{key}", c))
-            ptrs.append(f"{p}_s{ip}_{key}")
-            lens.append(str(len(c)))
-            deg = max(deg, len(c))
+    sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": 2}
+    sizes["max_sum"] = max(2, _summary_blocks(p, ns, FORCE_SUMMARY_KEYS, n_lam, out))
+    pieces_c = _history_c(name, p, ns, FORCE_TIME_PIECES, FORCE_HISTORY_KEYS, n_lam, out, sizes)
     logs = ", ".join("1" if lg else "0" for lg in log)
-    out.append(f"static const double *const {p}_sum[{len(ptrs)}] = {{{', '.join(ptrs)}}};\n"
-               f"static const int {p}_sum_len[{len(lens)}] = {{{', '.join(lens)}}};\n"
-               f"static const int {p}_log[{n_lam}] = {{{logs}}};\n"
+    out.append(f"static const int {p}_log[{n_lam}] = {{{logs}}};\n"
                f"static const zs__force_table zs__ftab_{name} = {{\n"
                f"    {n_lam}, {p}_edges, {p}_ga, {p}_gb, {p}_log, {num(edges[0])}, "
-               f"{num(edges[-1])}, {p}_sum, {p}_sum_len\n}};\n\n")
-    return "".join(out), deg
+               f"{num(edges[-1])}, {p}_sum, {p}_sum_len,\n"
+               f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
+    return "".join(out), sizes

@@ -17,12 +17,12 @@ sources (this package included) and the two table files.
 """
 from __future__ import annotations
 
-import hashlib
 import pathlib
 
 import sympy
 
 from .. import derivation_dir, generated_dir
+from .. import inputs_hash as _inputs_hash
 from . import ham as _ham
 from . import runtime as _rt
 from . import tables as _tables
@@ -54,18 +54,14 @@ def _inputs() -> list[pathlib.Path]:
     the tables."""
     gen = generated_dir()
     files = sorted(derivation_dir().glob("*.py")) + sorted(_HERE.parent.glob("*.py"))
-    files += sorted(_HERE.glob("*.py"))
+    files += sorted(_HERE.glob("*.py")) + sorted(_HERE.glob("*.in"))
     files += [gen / f for _, _, f in EXACT_TABLES + FORCE_TABLES] + [gen / HAM1_TABLE]
     return files
 
 
 def inputs_hash() -> str:
-    """SHA-256 (16 hex digits) of ``_inputs()``: names and text, line ends normalised."""
-    h = hashlib.sha256()
-    for f in _inputs():
-        h.update(f.name.encode())
-        h.update(f.read_bytes().replace(b"\r\n", b"\n"))
-    return h.hexdigest()[:16]
+    """The package's one hash (``codegen.inputs_hash``) of ``_inputs()``."""
+    return _inputs_hash(_inputs())
 
 
 def _c_header(description: str) -> str:

@@ -228,3 +228,15 @@ def test_runtime_tables_import_no_builder():
               "zener_sym.exact.inverse"):
         builders = sorted(d for d in GRAPH[m] if d.rpartition(".")[2].endswith("table_build"))
         assert not builders, f"{m} imports {builders}"
+
+
+def test_every_package_is_installed():
+    """Each folder of src/zener_sym with an __init__.py is listed in pyproject's packages (a
+    missing one imports in an editable install and is absent from a wheel)."""
+    import tomllib
+
+    listed = set(tomllib.loads((ROOT / "pyproject.toml").read_text("utf-8"))
+                 ["tool"]["setuptools"]["packages"])
+    src = ROOT / "src"
+    found = {".".join(p.parent.relative_to(src).parts) for p in src.rglob("__init__.py")}
+    assert found <= listed, f"not in pyproject's packages: {sorted(found - listed)}"

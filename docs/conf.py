@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import os
 import re
+import shutil
 import sys
 from pathlib import Path
 
@@ -68,6 +69,7 @@ REPO_LINKS = {
     "CHANGELOG.md": "changelog.rst",
     "CITATION.cff": "citing.rst",
     "LICENSE": "citing.rst#licence",
+    "examples/c/README.md": "c_kernels.rst",
 }
 
 
@@ -115,8 +117,17 @@ numpydoc_validation_checks: set = set()
 numpydoc_xref_param_type = False
 
 # --- Gallery ------------------------------------------------------------------------------------
+# The gallery is the top level of examples/ only: examples/c/ (the C kernels' examples, a page of
+# its own) would be taken for a sub-gallery, so the scripts are staged in the build folder.
+GALLERY_SRC = DOCS / "_build" / "gallery_src"
+shutil.rmtree(GALLERY_SRC, ignore_errors=True)
+GALLERY_SRC.mkdir(parents=True)
+for _f in sorted((ROOT / "examples").glob("*")):
+    if _f.is_file() and (_f.name == "GALLERY_HEADER.rst" or _f.name.startswith("plot_")):
+        shutil.copy2(_f, GALLERY_SRC / _f.name)
+
 sphinx_gallery_conf = {
-    "examples_dirs": str(ROOT / "examples"),
+    "examples_dirs": str(GALLERY_SRC),
     "gallery_dirs": "auto_examples",
     "filename_pattern": r"[\\/]plot_",
     # only the top level of examples/: examples/c/ holds the C kernels' examples, not gallery scripts

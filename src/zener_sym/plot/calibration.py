@@ -51,7 +51,7 @@ def fit_chart(fit, path=None, title=None, data_label="measured"):
         ax.errorbar(fit.v0, fit.e, yerr=err, fmt="o", color=data_color, markersize=3.5,
                     elinewidth=0.8, capsize=1.5, label=data_label)
         ax.set_ylabel(_st.label("e"))
-        ax.legend(loc="best")
+        _st.legend_outside(fig)  # below the residuals, off the data
         axr.axhline(0.0, color=exact["color"], linewidth=0.8)
         axr.errorbar(fit.v0, fit.residuals, yerr=err, fmt="o", color=data_color, markersize=3.5,
                      elinewidth=0.8, capsize=1.5)

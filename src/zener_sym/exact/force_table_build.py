@@ -60,8 +60,6 @@ N_TIME = {"C": 10, "R": 12}
 RTOL = 1e-13
 #: Trimming, rounding and ``--check`` tolerance: the plate builder's (:mod:`.table_build`).
 TRIM = _tb.TRIM
-HISTORY_TRIM = _tb.HISTORY_TRIM
-HISTORY_QUANTUM = _tb.HISTORY_QUANTUM
 CHECK_RTOL = _tb.CHECK_RTOL
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m", "log_int_F2",
@@ -133,16 +131,9 @@ def build_tables() -> dict:
             c = cheb_coefficients(np.array([d[k] for d in data]))
             summary[k].append(trim_trailing(c, np.abs(c) > TRIM * np.abs(c).max()))
         for key in history:
-            vals = np.array([d[key] for d in data])  # [lambda node, sub, time node]
-            c = cheb_coefficients(cheb_coefficients(vals, axis=2), axis=0)
-            if key[1] == "f":  # c moves delta by c delta: weighed by delta / delta_m
-                wt = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
-            else:
-                wt = np.ones(c.shape[1])
-            # drop trailing rows/columns that move the field by less than HISTORY_TRIM
-            history[key].append(tuple(trim_trailing(c[:, j, :].T, np.abs(c[:, j, :].T) * wt[j]
-                                                    > HISTORY_TRIM) for j in range(c.shape[1])))
-            weights[key].append(tuple(float(x) for x in wt))
+            mats, wts = _tb.history_coefficients(data, key)
+            history[key].append(mats)
+            weights[key].append(wts)
     return {"summary": summary, "history": history, "weights": weights}
 
 

@@ -331,18 +331,26 @@ def build_tables() -> dict:
                 history[key].append(())
                 weights[key].append(())
                 continue
-            vals = np.array([d[key] for d in data])  # [lambda node, sub, time node]
-            c = cheb_coefficients(cheb_coefficients(vals, axis=2), axis=0)
-            if key[1] == "f":
-                wt = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
-            else:
-                wt = np.ones(c.shape[1])
-            # one [time degree, lambda degree] matrix per sub-piece
-            # drop trailing rows/columns that move the field by less than HISTORY_TRIM
-            history[key].append(tuple(trim_trailing(c[:, j, :].T, np.abs(c[:, j, :].T) * wt[j]
-                                                    > HISTORY_TRIM) for j in range(c.shape[1])))
-            weights[key].append(tuple(float(x) for x in wt))
+            mats, wts = history_coefficients(data, key)
+            history[key].append(mats)
+            weights[key].append(wts)
     return {"summary": summary, "history": history, "weights": weights}
+
+
+def history_coefficients(data: list, key: tuple) -> tuple:
+    """One lambda piece's history series of ``key`` = (time piece, field) from its node data
+    (the plate's and the force-free end's tables): per sub-piece one [time degree, lambda
+    degree] Chebyshev matrix, trimmed where it moves the field by less than HISTORY_TRIM, and
+    the sub-pieces' weights."""
+    vals = np.array([d[key] for d in data])  # [lambda node, sub, time node]
+    c = cheb_coefficients(cheb_coefficients(vals, axis=2), axis=0)
+    if key[1] == "f":  # c moves delta by c delta: weighed by delta / delta_m
+        wt = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
+    else:
+        wt = np.ones(c.shape[1])
+    mats = tuple(trim_trailing(c[:, j, :].T, np.abs(c[:, j, :].T) * wt[j] > HISTORY_TRIM)
+                 for j in range(c.shape[1]))
+    return mats, tuple(float(x) for x in wt)
 
 
 def input_files() -> list[pathlib.Path]:

@@ -25,7 +25,7 @@ FOLDERS = {
 LAYERS = (
     ("derivation", ("zener_sym.derivation",)),
     ("codegen", ("zener_sym.codegen",)),
-    ("leaf helpers", ("zener_sym.params", "zener_sym.numerics")),
+    ("leaf helpers", ("zener_sym.params", "zener_sym.numerics", "zener_sym.typing")),
     ("generated", ("zener_sym.generated",)),
     ("numerics", ("zener_sym.exact", "zener_sym.ham")),
     ("models", ("zener_sym.models",)),

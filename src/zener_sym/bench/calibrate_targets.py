@@ -23,7 +23,8 @@ def fit_target(n: int = 20) -> dict[str, Any]:
 
     v0 = np.geomspace(0.1, 10.0, n)
     c = grain_contact("1 mm", 1e-5, "glass", wall="steel")
-    lam = zs.viscoelastic_lambda(3e-7, c.rho, c.m_eff, v0)
+    # an array for the array v0 (asarray: the signature says float or array)
+    lam = np.asarray(zs.viscoelastic_lambda(3e-7, c.rho, c.m_eff, v0), dtype=np.float64)
     e = zs.summary(lam, model="exact").e + np.random.default_rng(24).normal(0.0, 0.01, n)
     def fit() -> object:
         return zs.fit_dissipation(v0, e, "1 mm", 1e-5, "glass", wall="steel", contact_end="delta")

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
 __all__ = ["build"]
 
 _N_TAU = 64
-_REF_OPTIONS = {"rtol": 1e-13}
+_REF_OPTIONS: dict[str, Any] = {"rtol": 1e-13}  # the exact model's options
 _REFERENCE = ("model 'exact' (scipy DOP853, analytic phases) at rtol 1e-13; the exact model "
               "itself is measured at its default rtol 1e-12")
 

@@ -30,7 +30,8 @@ def timed(fn: Callable[[], _T], min_repeats: int = 3, min_total: float = 0.2,
     return value, statistics.median(times)
 
 
-def median_time(fn: Callable[[], object], min_repeats: int = 3, min_total: float = 0.2, max_repeats: int = 200) -> float:
+def median_time(fn: Callable[[], object], min_repeats: int = 3, min_total: float = 0.2,
+                max_repeats: int = 200) -> float:
     """Median wall time of ``fn()`` in seconds (see ``timed``)."""
     return timed(fn, min_repeats, min_total, max_repeats)[1]
 

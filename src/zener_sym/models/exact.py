@@ -65,6 +65,8 @@ _Integration = tuple[str, dict[str, Any]]
 
 
 class ExactModel(Model):
+    """The model ``"exact"``: Eq. (10) solved exactly (options and backends: module docstring)."""
+
     name = "exact"
     description = ("Zener's equation (10) solved exactly: Chebyshev tables (summary for "
                    "0 <= lambda <= 1000, summary and history), direct integration on request")

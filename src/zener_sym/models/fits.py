@@ -49,6 +49,8 @@ def int_F2_fit(lam: RealArrayLike) -> FloatArray:
 
 
 class Fits(Model):
+    """The model ``"fits"``: the paper's explicit fits, Eqs. (24), (55), (70), (80), Sec. 3.5."""
+
     name = "fits"
     description = ("the paper's fits: delta_m Eq. (24), tau_d Eq. (55), e Eq. (80), xi Eq. (70), "
                    "int F^2 quadratic of Sec. 3.5")

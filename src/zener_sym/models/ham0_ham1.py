@@ -85,6 +85,8 @@ class _HamModel(Model):
 
 
 class Ham0(_HamModel):
+    """The model ``"ham0"``: the zeroth-order HAM solution, Eq. (35)."""
+
     name = "ham0"
     description = "zeroth-order HAM solution, Eq. (35): damped sine, closed forms (54)-(61), (79)"
 
@@ -173,6 +175,8 @@ class Ham0(_HamModel):
 
 
 class Ham1(_HamModel):
+    """The model ``"ham1"``: the first-order HAM solution, Eq. (42)."""
+
     name = "ham1"
     description = ("first-order HAM solution, Eq. (42): delta0 + delta1, contact end by root "
                    "finding, impulse by quadrature of the force (per-lambda Chebyshev series; "

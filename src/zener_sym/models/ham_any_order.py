@@ -45,6 +45,8 @@ def _opts(options: Mapping[str, Any]) -> tuple[int, float | None, str]:
 
 
 class HamSeries(Model):
+    """The model ``"ham"``: the HAM series to a chosen order (options: module docstring)."""
+
     name = "ham"
     description = ("HAM series to a chosen order with Liao's convergence control c0 (options "
                    "order, c0, formulation='paper' or 'strained'); spectral solution of each "

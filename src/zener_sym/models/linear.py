@@ -158,6 +158,8 @@ def linear_history(lam: RealArrayLike, tau: RealArrayLike,
 
 
 class Linear(Model):
+    """The model ``"linear"``: Mueller et al.'s F = kappa delta in Eq. (10), in closed form."""
+
     name = "linear"
     description = ("Mueller et al.'s linearized contact law: F = kappa delta in Eq. (10), a damped "
                    "oscillator in closed form (option stiffness: " + ", ".join(STIFFNESS) + ")")
@@ -178,6 +180,8 @@ class Linear(Model):
 
 
 class Raman(Model):
+    """The model ``"raman"``: Raman's e = 1 - c1 lambda (c1 derived)."""
+
     name = "raman"
     description = ("Raman's small-lambda restitution e = 1 - c1 lambda, c1 = int F_Hertz^2 = "
                    f"{RAMAN_C1:.10f} (derived)")

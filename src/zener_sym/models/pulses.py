@@ -31,6 +31,8 @@ def _hertz_int_F2() -> float:
 
 
 class Hertz(Model):
+    """The model ``"hertz"``: the exact lambda = 0 solution whatever lambda."""
+
     name = "hertz"
     description = "rigid half-space: the exact lambda = 0 solution (lambda ignored)"
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
@@ -94,6 +96,8 @@ class _Sine(Model):
 
 
 class Hunter(_Sine):
+    """The model ``"hunter"``: Hunter's sine pulse, Eq. (52)."""
+
     name = "hunter"
     description = "Hunter's sinusoidal force pulse, Eq. (52) (lambda ignored)"
 
@@ -113,6 +117,8 @@ class Hunter(_Sine):
 
 
 class Reed(_Sine):
+    """The model ``"reed"``: Reed's sin^{3/2} pulse, Eq. (53)."""
+
     name = "reed"
     description = "Reed's sin^(3/2) force pulse, Eq. (53) (lambda ignored)"
 
@@ -137,6 +143,8 @@ class Reed(_Sine):
 
 
 class OneWay(Model):
+    """The model ``"oneway"``: the Hertz pulse drives the plate, which does not act back."""
+
     name = "oneway"
     description = ("one-way coupling: the Hertz pulse drives the plate, xi = 2 lambda int F_Hertz^2, "
                    "e = sqrt(1 - xi)")

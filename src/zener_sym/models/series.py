@@ -84,6 +84,8 @@ def _poly(c: FloatArray, x: FloatArray) -> FloatArray:
 
 
 class SeriesModel(Model):
+    """The model ``"series"``: small-lambda series and large-lambda asymptotics of e and tau_d."""
+
     name = "series"
     description = ("Small-lambda series (perturbation hierarchy) and large-lambda asymptotics of "
                    "e and tau_d; refuses the middle where neither meets rtol")

@@ -151,3 +151,20 @@ def test_ham0_history_by_blocks_matches_the_generated_kernels(shape):
     pick = (slice(None, None, 97),) * len(shape)  # the quadrature costs 64 nodes a point
     np.testing.assert_allclose(h.impulse[pick], h0.impulse(tau[pick], lam[pick]), rtol=2e-12,
                                atol=1e-14)
+
+
+def test_computed_bounds_against_independent_routes_and_read_only():
+    """The bounds known only at run time (``computed_bound``): ham0, ham1 and ham stop at the
+    generated lam_crit, which the hand-written root of Eq. (81) (``formulas.LAM_CRIT``, brentq on
+    lambda^6 = 64 (lambda + (5/4)^{-3/5})) must equal; oneway stops just above
+    1 / (2 int F_Hertz^2), with int F_Hertz^2 in closed form (``linear.RAMAN_C1``, derived in
+    ``derivation.linear``) against the exact model's tables (1e-11). Like the properties they
+    replace, they cannot be set."""
+    from zener_sym.models.linear import RAMAN_C1
+
+    for name in ("ham0", "ham1", "ham"):
+        assert REGISTRY[name].lam_bound == pytest.approx(fm.LAM_CRIT, rel=1e-15, abs=0.0)
+    assert REGISTRY["oneway"].lam_bound == pytest.approx(1.0 / (2.0 * RAMAN_C1), rel=1e-10)
+    for name in ("ham1", "oneway"):
+        with pytest.raises(AttributeError, match="computed"):
+            REGISTRY[name].lam_bound = 1.0

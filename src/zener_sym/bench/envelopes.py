@@ -10,30 +10,39 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..models.base import Model
 from ..scene.envelopes import (ABSOLUTE_QUANTITIES, FLOOR, INTERVALS, QUANTITIES, SCHEMA,
                                SUMMARY_QUANTITIES)
+from ..typing import FloatArray
+
+if TYPE_CHECKING:
+    from ..api import History, Summary
 
 __all__ = ["build"]
 
 _N_TAU = 64
-_REF_OPTIONS = {"rtol": 1e-13}
+_REF_OPTIONS: dict[str, Any] = {"rtol": 1e-13}  # the exact model's options
 _REFERENCE = ("model 'exact' (scipy DOP853, analytic phases) at rtol 1e-13; the exact model "
               "itself is measured at its default rtol 1e-12")
 
 
-def _grid(points_per_interval: int, intervals) -> np.ndarray:
+def _grid(points_per_interval: int, intervals: Iterable[tuple[float, float]]) -> FloatArray:
     pts = [np.linspace(lo, hi, points_per_interval) for lo, hi in intervals]
     return np.unique(np.concatenate(pts))
 
 
-def _rel(x, ref):
-    return np.abs(np.asarray(x) - ref) / np.maximum(np.abs(ref), FLOOR)
+def _rel(x: FloatArray, ref: FloatArray) -> FloatArray:
+    rel: FloatArray = np.abs(np.asarray(x) - ref) / np.maximum(np.abs(ref), FLOOR)
+    return rel
 
 
-def _measure_model(model, lam, ref_summary, ref_hist, tau_grid):
+def _measure_model(model: Model, lam: FloatArray, ref_summary: Summary, ref_hist: History,
+                   tau_grid: FloatArray) -> dict[str, FloatArray]:
     """Per-lambda relative errors {quantity: array over lam} (NaN where not measurable)."""
     from ..api import history, summary
 
@@ -58,7 +67,7 @@ def _measure_model(model, lam, ref_summary, ref_hist, tau_grid):
     return out
 
 
-def _cost(model, lams, repeats) -> float:
+def _cost(model: Model, lams: Iterable[float], repeats: int) -> float:
     """Median over repeats and lambdas of the time of one scalar ``summary`` call [s]."""
     from ..api import summary
 
@@ -74,8 +83,9 @@ def _cost(model, lams, repeats) -> float:
     return float(np.median(times)) if times else math.inf
 
 
-def build(models=None, intervals=INTERVALS, points_per_interval: int = 4, repeats: int = 3,
-          cost_lams=(0.1, 0.8, 1.6)) -> dict:
+def build(models: Iterable[str] | None = None,
+          intervals: Iterable[tuple[float, float]] = INTERVALS, points_per_interval: int = 4,
+          repeats: int = 3, cost_lams: Sequence[float] = (0.1, 0.8, 1.6)) -> dict[str, Any]:
     """Measure the envelope table for ``models`` (default: every registered model).
 
     Parameters
@@ -114,7 +124,7 @@ def build(models=None, intervals=INTERVALS, points_per_interval: int = 4, repeat
     ref_hist = history(lam[:, None], tau_grid, model="exact", **_REF_OPTIONS)
     costs = {m.name: _cost(m, cost_lams, repeats) for m in ms}
     order = sorted(costs, key=lambda n: (costs[n], n))
-    table = {
+    table: dict[str, Any] = {
         "schema": SCHEMA, "reference": _REFERENCE,
         "error_definition": f"max over grid points of |q - q_ref| / max(|q_ref|, {FLOOR:g}) "
                             f"({', '.join(ABSOLUTE_QUANTITIES)}: |q - q_ref|); "

@@ -5,6 +5,9 @@ functions with its own grid sizes and adds an accuracy check.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
 
 from ..exact import solver as exact
@@ -12,7 +15,7 @@ from .methods import dop853_force_loop
 from .timing import alternating_median_times, median_time
 
 
-def summary_target(n: int = 2000, quick: bool = False) -> dict:
+def summary_target(n: int = 2000, quick: bool = False) -> dict[str, Any]:
     """Summaries of n lambda in [0, 5] from the tables against a per-lambda ``exact.solve`` loop
     (DOP853 with events) at rtol 1e-10; the loop is timed on every lambda, or in --quick on an
     evenly spread subset, per lambda."""
@@ -28,7 +31,7 @@ def summary_target(n: int = 2000, quick: bool = False) -> dict:
             "slow_s": t_loop, "ratio": t_loop / t_fast, "required": 50.0}
 
 
-def history_target(m: int = 200, k: int = 200, quick: bool = False) -> dict:
+def history_target(m: int = 200, k: int = 200, quick: bool = False) -> dict[str, Any]:
     """Histories of m lambda in [0, 5] x k tau across each contact from the tables against a
     per-lambda ``exact.solve(...).history`` loop at rtol 1e-8 (in --quick on every 8th lambda)."""
     import zener_sym as zs
@@ -46,7 +49,7 @@ def history_target(m: int = 200, k: int = 200, quick: bool = False) -> dict:
             "fast_s": t_fast, "slow_s": t_loop, "ratio": t_loop / t_fast, "required": 20.0}
 
 
-def history_vs_dop853_target(m: int = 200, k: int = 500, quick: bool = False) -> dict:
+def history_vs_dop853_target(m: int = 200, k: int = 500, quick: bool = False) -> dict[str, Any]:
     """Issue 14: exact histories (tables) on m lambda in [0, 5] x k tau against a per-lambda scipy
     DOP853 solve with dense output at rtol 1e-10 (the textbook set-up of ``bench.targets``:
     tau from 0, guarded right-hand side, event delta = 0), the force on the same grid."""
@@ -64,14 +67,14 @@ def history_vs_dop853_target(m: int = 200, k: int = 500, quick: bool = False) ->
             "fast_s": t_fast, "slow_s": t_loop, "ratio": t_loop / t_fast, "required": 300.0}
 
 
-def ham1_scalar_summary_target() -> dict:
+def ham1_scalar_summary_target() -> dict[str, Any]:
     """Issue 14: a scalar ham1 summary within 3x of a scalar exact summary; ratio = time of
     exact / time of ham1 (required >= 1/3)."""
     import zener_sym as zs
 
     lams = (0.3, 1.1, 2.0, 2.42)  # 2.42: inside [2.414, 2.44], where the series fall back
 
-    def one(model):
+    def one(model: str) -> Callable[[], object]:
         return lambda: [zs.summary(x, model=model) for x in lams]
 
     t_exact = median_time(one("exact"), min_repeats=5, min_total=0.2) / len(lams)
@@ -81,7 +84,7 @@ def ham1_scalar_summary_target() -> dict:
             "slow_s": t_exact, "ratio": t_exact / t_ham1, "required": 1.0 / 3.0}
 
 
-def pulse_history_targets(m: int = 200, k: int = 500) -> list[dict]:
+def pulse_history_targets(m: int = 200, k: int = 500) -> list[dict[str, Any]]:
     """Issue 14: ham0, hunter and reed histories no slower than exact's on the same grid
     (m lambda in [0, 2.4] x k tau up to 1.05 of ham0's tau_d), the four timed in alternation;
     ratio = time of exact / time of the model (required >= 1)."""
@@ -90,16 +93,18 @@ def pulse_history_targets(m: int = 200, k: int = 500) -> list[dict]:
     lams = np.linspace(0.0, 2.4, m)
     tau = zs.summary(lams, model="ham0").tau_d[:, None] * 1.05 * np.linspace(0.0, 1.0, k)
     names = ("exact", "ham0", "hunter", "reed")
+    def history_of(name: str) -> Callable[[], object]:
+        return lambda: zs.history(lams[:, None], tau, model=name).force
+
     # timed in alternation: each ratio's two sides see the same state of the process
-    times = alternating_median_times(
-        [lambda name=name: zs.history(lams[:, None], tau, model=name).force for name in names])
+    times = alternating_median_times([history_of(name) for name in names])
     t_exact = times[0]
     return [{"target": f"{name} history (every field) vs exact history",
              "grid": f"{m} lambda x {k} tau", "fast_s": t, "slow_s": t_exact,
              "ratio": t_exact / t, "required": 1.0} for name, t in zip(names[1:], times[1:])]
 
 
-def large_lambda_summary_target(n: int = 2000) -> dict:
+def large_lambda_summary_target(n: int = 2000) -> dict[str, Any]:
     """Issue 14: exact summaries per lambda on (5, 1000] within 10x of those on [0, 5]; ratio =
     time per lambda on [0, 5] / time per lambda on (5, 1000] (required >= 0.1)."""
     import zener_sym as zs
@@ -113,7 +118,7 @@ def large_lambda_summary_target(n: int = 2000) -> dict:
             "ratio": t_small / t_large, "required": 0.1}
 
 
-def issue14_targets(quick: bool = False) -> list[dict]:
+def issue14_targets(quick: bool = False) -> list[dict[str, Any]]:
     """The speed targets of issue 14, item 8, measured side by side in one run."""
     rows = [history_vs_dop853_target(quick=quick), ham1_scalar_summary_target(),
             *pulse_history_targets(), large_lambda_summary_target()]
@@ -122,7 +127,7 @@ def issue14_targets(quick: bool = False) -> list[dict]:
     return rows
 
 
-def run(quick: bool = False) -> list[dict]:
+def run(quick: bool = False) -> list[dict[str, Any]]:
     rows = [summary_target(quick=quick), history_target(quick=quick)]
     for r in rows:
         r["met"] = r["ratio"] >= r["required"]

@@ -4,6 +4,8 @@ table and ``lam_for`` against a one-second budget (the issue's "well under a sec
 at most half of it)."""
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from .timing import alternating_median_times, median_time
@@ -12,7 +14,7 @@ from .timing import alternating_median_times, median_time
 BUDGET_S = 1.0
 
 
-def summary_force_vs_plate(n: int = 2000) -> dict:
+def summary_force_vs_plate(n: int = 2000) -> dict[str, Any]:
     """Summaries of n lambda over [0, 1000] (half linear on [0, 5], half geometric above) from
     the force-end tables against the plate's; ratio = plate time / force time (within 2x:
     required >= 0.5)."""
@@ -26,7 +28,7 @@ def summary_force_vs_plate(n: int = 2000) -> dict:
             "ratio": t_plate / t_force, "required": 0.5}
 
 
-def history_force_vs_plate(m: int = 200, k: int = 500) -> dict:
+def history_force_vs_plate(m: int = 200, k: int = 500) -> dict[str, Any]:
     """Histories of m lambda in [0, 5] x k tau over 1.05 of each end's own contact, force-free
     end against the plate end; ratio = plate time / force time (required >= 0.5)."""
     import zener_sym as zs
@@ -43,12 +45,12 @@ def history_force_vs_plate(m: int = 200, k: int = 500) -> dict:
             "ratio": t_plate / t_force, "required": 0.5}
 
 
-def lookup_table_force(n: int = 1001) -> dict:
+def lookup_table_force(n: int = 1001) -> dict[str, Any]:
     """``zener-sym table --contact-end force`` (its ``lookup_table`` and CSV text) for n lambda
     on [0, 5] against the budget; ratio = budget / time (required >= 2)."""
     from ..scene.lookup import lookup_csv, lookup_table
 
-    def run():
+    def run() -> str:
         return lookup_csv(lookup_table(("e", "tau_d", "F_m"), f"0:5:{n}", contact_end="force"))
 
     t = median_time(run, min_repeats=3, min_total=0.2)
@@ -57,7 +59,7 @@ def lookup_table_force(n: int = 1001) -> dict:
             "required": 2.0}
 
 
-def lam_for_target(n: int = 100_000, quick: bool = False) -> list[dict]:
+def lam_for_target(n: int = 100_000, quick: bool = False) -> list[dict[str, Any]]:
     """``lam_for(e=...)`` on n restitution values spread over each end's reachable range, against
     the budget; ratio = budget / time (required >= 2)."""
     import zener_sym as zs
@@ -74,7 +76,7 @@ def lam_for_target(n: int = 100_000, quick: bool = False) -> list[dict]:
     return rows
 
 
-def run(quick: bool = False) -> list[dict]:
+def run(quick: bool = False) -> list[dict[str, Any]]:
     rows = [summary_force_vs_plate(), history_force_vs_plate(), lookup_table_force(),
             *lam_for_target(quick=quick)]
     for r in rows:

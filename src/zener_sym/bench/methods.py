@@ -7,15 +7,22 @@ line of a work-precision chart.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Any
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..exact import solver as exact
 from ..models import REGISTRY, FieldUnavailableError
+from ..typing import FloatArray
 from .reference import QUANTITIES
+
+#: lams -> {quantity: array over lams}
+SummaryFn = Callable[[FloatArray], dict[str, FloatArray]]
+#: (lams, one tau array per lambda) -> one force array per lambda
+ForceFn = Callable[[FloatArray, Sequence[FloatArray]], Sequence[FloatArray]]
 
 TOLERANCES = tuple(10.0**-k for k in range(3, 13))
 QUICK_TOLERANCES = (1e-3, 1e-6, 1e-9)
@@ -24,47 +31,79 @@ IVP_METHODS = ("RK45", "DOP853", "LSODA", "Radau")
 
 @dataclass
 class Method:
+    """One method under test: its label, the family (one chart line) and what it computes."""
+
     name: str
     family: str
-    summary: Callable | None = None  # lams -> {quantity: array}
-    force: Callable | None = None  # (lams, list of tau arrays) -> list of force arrays
+    summary: SummaryFn | None = None
+    force: ForceFn | None = None
     notes: str = ""
-    extra: dict = field(default_factory=dict)
+    #: "rtol" (a sweep's tolerance), "stride" (slow methods: every stride-th history point)
+    extra: dict[str, Any] = field(default_factory=dict)
 
 
 def _phases(method: str, rtol: float) -> Method:
-    def solve_all(lams):
+    def solve_all(lams: FloatArray) -> list[exact.ExactSolution]:
         return [exact.solve(x, rtol=rtol, atol=rtol * 1e-3, method=method) for x in lams]
 
-    def summary(lams):
+    def summary(lams: FloatArray) -> dict[str, FloatArray]:
         sols = solve_all(lams)
         return {q: np.array([getattr(s, q) for s in sols]) for q in QUANTITIES}
 
-    def force(lams, taus):
+    def force(lams: FloatArray, taus: Sequence[FloatArray]) -> list[FloatArray]:
         return [s.history(t)["force"] for s, t in zip(solve_all(lams), taus)]
 
     return Method(f"exact {method} rtol={rtol:.0e}", f"exact, solve_ivp {method}", summary, force,
                   "three analytic phases (u, tau, u), scipy solve_ivp", {"rtol": rtol})
 
 
-def naive_solve(lam, rtol, method="DOP853", dense=False):
+def naive_solve(lam: float, rtol: float, method: str = "DOP853",
+                dense: bool = False) -> tuple[dict[str, float], Any]:
     """Eq. (10) integrated in tau from tau = 0 with a guarded right-hand side and an event at
-    delta = 0 (direction -1): the textbook set-up, kept to show what the phases buy."""
+    delta = 0 (direction -1): the textbook set-up, kept to show what the phases buy.
 
-    def f(t, y):
+    Parameters
+    ----------
+    lam : float
+        Zener's lambda (Eq. 11).
+    rtol : float
+        solve_ivp's rtol (atol = rtol / 1000).
+    method : str
+        solve_ivp's method.
+    dense : bool
+        Keep the dense output (``sol.sol``).
+
+    Returns
+    -------
+    summary : dict of str to float
+        F_m, tau_d, e, impulse.
+    sol : scipy.integrate OdeResult
+        solve_ivp's result.
+
+    Raises
+    ------
+    RuntimeError
+        When no end of contact is found.
+    """
+
+    def f(t: float, y: FloatArray) -> list[float]:
         d = max(y[0], 0.0)
         F = d * math.sqrt(d)
         return [y[1] - lam * F, -F]
 
-    def top(t, y):
+    def top(t: float, y: FloatArray) -> float:
         d = max(y[0], 0.0)
-        return y[1] - lam * d * math.sqrt(d)
+        g: float = y[1] - lam * d * math.sqrt(d)
+        return g
 
-    def end(t, y):
-        return y[0]
+    def end(t: float, y: FloatArray) -> float:
+        g: float = y[0]
+        return g
 
-    top.direction = -1
-    end.terminal, end.direction = True, -1
+    # solve_ivp reads these attributes off the event functions
+    setattr(top, "direction", -1)
+    setattr(end, "terminal", True)
+    setattr(end, "direction", -1)
     sol = solve_ivp(f, (0.0, 100.0 + 100.0 * lam), [0.0, 1.0], method=method, rtol=rtol,
                     atol=rtol * 1e-3, events=[top, end], dense_output=dense)
     if len(sol.t_events[1]) == 0 or len(sol.t_events[0]) == 0:
@@ -75,11 +114,11 @@ def naive_solve(lam, rtol, method="DOP853", dense=False):
 
 
 def _naive(method: str, rtol: float) -> Method:
-    def summary(lams):
+    def summary(lams: FloatArray) -> dict[str, FloatArray]:
         rows = [naive_solve(x, rtol, method)[0] for x in lams]
         return {q: np.array([r[q] for r in rows]) for q in QUANTITIES}
 
-    def force(lams, taus):
+    def force(lams: FloatArray, taus: Sequence[FloatArray]) -> list[FloatArray]:
         out = []
         for x, t in zip(lams, taus):
             s, sol = naive_solve(x, rtol, method, dense=True)
@@ -91,17 +130,17 @@ def _naive(method: str, rtol: float) -> Method:
                   "tau from 0, max(delta, 0) guard, event delta = 0", {"rtol": rtol})
 
 
-def _registry_model(name: str, **options) -> Method:
+def _registry_model(name: str, **options: Any) -> Method:
     model = REGISTRY[name]
 
-    def summary(lams):
+    def summary(lams: FloatArray) -> dict[str, FloatArray]:
         import zener_sym as zs
 
         lams = np.asarray(lams, dtype=float)
         # a model valid only below some lambda is measured where it is valid; NaN elsewhere
         ok = model.valid(lams)
         s = zs.summary(lams[ok], model=name, **options)
-        out = {}
+        out: dict[str, FloatArray] = {}
         for q in QUANTITIES:
             try:
                 v = np.full(lams.shape, np.nan)
@@ -111,7 +150,7 @@ def _registry_model(name: str, **options) -> Method:
                 pass
         return out
 
-    def force(lams, taus):
+    def force(lams: FloatArray, taus: Sequence[FloatArray]) -> list[FloatArray]:
         import zener_sym as zs
 
         lam_col = np.asarray(lams, dtype=float)[:, None]
@@ -143,9 +182,24 @@ def catalogue(quick: bool = False) -> list[Method]:
     return methods
 
 
-def dop853_force_loop(lams, tau, rtol: float = 1e-6):
+def dop853_force_loop(lams: FloatArray, tau: FloatArray, rtol: float = 1e-6) -> FloatArray:
     """The comparator of the ham1 target: per lambda, a scipy DOP853 solve of Eq. (10) with dense
-    output (tau from 0, guarded right-hand side, event delta = 0), force on that row of ``tau``."""
+    output (tau from 0, guarded right-hand side, event delta = 0), force on that row of ``tau``.
+
+    Parameters
+    ----------
+    lams : numpy.ndarray
+        Lambda values, shape (m,).
+    tau : numpy.ndarray
+        Times, shape (m, k): row i for lams[i].
+    rtol : float
+        solve_ivp's rtol.
+
+    Returns
+    -------
+    numpy.ndarray
+        The force, of the shape of ``tau`` (0 past each contact's end).
+    """
     out = np.empty_like(tau)
     for i, lam in enumerate(lams):
         summ, sol = naive_solve(lam, rtol, "DOP853", dense=True)

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import json
 import pathlib
+from collections.abc import Mapping, Sequence
+from typing import Any, TypedDict
 
 import numpy as np
 
@@ -17,7 +19,7 @@ import numpy as np
 LAMBDAS = (0.0, 0.11, 0.5, 1.01, 1.51, 1.99, 2.4)
 #: points of the force history per lambda, evenly spread over [0, tau_d]
 N_TAU = 101
-QUANTITIES = ("F_m", "tau_d", "e", "impulse")
+QUANTITIES: tuple[str, ...] = ("F_m", "tau_d", "e", "impulse")
 
 CACHE = pathlib.Path(__file__).resolve().parent.parent / "data" / "bench_reference.json"
 
@@ -26,7 +28,24 @@ CACHE = pathlib.Path(__file__).resolve().parent.parent / "data" / "bench_referen
 SOURCES = ("mpmath", "scipy")
 
 
-def compute(lambdas=LAMBDAS, n_tau=N_TAU, dps=30, source: str = "mpmath") -> dict:
+class Reference(TypedDict):
+    """The reference, as ``compute`` gives it and the cache holds it (JSON). Per-lambda entries
+    are keyed by ``repr(lambda)``."""
+
+    lambdas: list[float]
+    n_tau: int
+    #: how the values were computed (method and precision)
+    source: str
+    #: repr(lambda) -> {quantity of ``QUANTITIES``: value}
+    summary: dict[str, dict[str, float]]
+    #: repr(lambda) -> the n_tau times, evenly spread over [0, tau_d]
+    tau: dict[str, list[float]]
+    #: repr(lambda) -> the force at those times
+    force: dict[str, list[float]]
+
+
+def compute(lambdas: Sequence[float] = LAMBDAS, n_tau: int = N_TAU, dps: int = 30,
+            source: str = "mpmath") -> Reference:
     """Reference summary and force history.
 
     Parameters
@@ -40,10 +59,20 @@ def compute(lambdas=LAMBDAS, n_tau=N_TAU, dps=30, source: str = "mpmath") -> dic
     source : {"mpmath", "scipy"}
         ``"mpmath"`` (default): ``zener_sym.exact.mp`` at ``dps`` digits, what the committed
         cache holds. ``"scipy"``: the scipy path at rtol 1e-13 (fast; for tests).
+
+    Returns
+    -------
+    Reference
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``source`` (and from the solvers, for a bad lambda or dps).
     """
     if source not in SOURCES:
         raise ValueError(f"unknown reference source {source!r}; allowed: 'mpmath', 'scipy'")
-    out = {"lambdas": list(lambdas), "n_tau": n_tau, "summary": {}, "tau": {}, "force": {}}
+    out: Reference = {"lambdas": list(lambdas), "n_tau": n_tau, "source": "", "summary": {},
+                      "tau": {}, "force": {}}
     if source == "mpmath":
         from ..exact import mp as exact_mp
 
@@ -60,27 +89,29 @@ def compute(lambdas=LAMBDAS, n_tau=N_TAU, dps=30, source: str = "mpmath") -> dic
 
         out["source"] = "zener_sym.exact.solver (scipy DOP853) at rtol=1e-13"
         for lam in lambdas:
-            s = exact.solve(lam, rtol=1e-13, atol=1e-16)
-            tau = np.linspace(0.0, s.tau_d, n_tau)
-            out["summary"][repr(lam)] = {q: float(getattr(s, q)) for q in QUANTITIES}
-            out["tau"][repr(lam)] = tau.tolist()
-            out["force"][repr(lam)] = s.history(tau)["force"].tolist()
+            sol = exact.solve(lam, rtol=1e-13, atol=1e-16)
+            tau_grid = np.linspace(0.0, sol.tau_d, n_tau)
+            out["summary"][repr(lam)] = {q: float(getattr(sol, q)) for q in QUANTITIES}
+            out["tau"][repr(lam)] = tau_grid.tolist()
+            out["force"][repr(lam)] = sol.history(tau_grid)["force"].tolist()
     return out
 
 
-def load() -> dict:
-    """The cached reference if present, else computed now."""
+def load() -> Reference:
+    """The cached reference if present, else computed now (``compute()``, minutes)."""
     if CACHE.exists():
-        return json.loads(CACHE.read_text())
+        cached: Reference = json.loads(CACHE.read_text())
+        return cached
     return compute()
 
 
-def dumps(ref: dict) -> str:
+def dumps(ref: Reference) -> str:
     """The reference as the cache's text (stable JSON)."""
     return json.dumps(ref, indent=1, sort_keys=True) + "\n"
 
 
-def write_cache(ref: dict) -> None:
+def write_cache(ref: Reference) -> None:
+    """Write ``ref`` to the cache file ``CACHE``."""
     CACHE.parent.mkdir(exist_ok=True)
     CACHE.write_text(dumps(ref))
 
@@ -90,9 +121,11 @@ def write_cache(ref: dict) -> None:
 CHECK_RTOL = 1e-13
 
 
-def compare(old: dict, new: dict, rtol: float = CHECK_RTOL) -> list[str]:
+def compare(old: Mapping[str, Any], new: Mapping[str, Any], rtol: float = CHECK_RTOL) -> list[str]:
     """Differences that make the reference ``old`` stale relative to ``new``: other inputs or
-    source, or a value beyond ``rtol`` (relative to the largest force for the history)."""
+    source, or a value beyond ``rtol`` (relative to the largest force for the history).
+
+    Both are read as JSON gives them (``old`` may be any stale layout), hence plain mappings."""
     bad = [f"{k}: {old.get(k)!r} -> {new.get(k)!r}" for k in ("lambdas", "n_tau", "source")
            if old.get(k) != new.get(k)]
     if bad:

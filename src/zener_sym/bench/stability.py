@@ -13,10 +13,18 @@ from __future__ import annotations
 
 import csv
 import pathlib
+from collections.abc import Mapping, Sequence
+from typing import NamedTuple
 
 import numpy as np
+import numpy.typing as npt
 
 from ..exact import solver as exact
+from ..typing import FloatArray
+from .methods import Method
+
+#: A method's cells on the grid: one of ``CLASSES`` each (an object array of str).
+Cells = npt.NDArray[np.object_]
 
 CLASSES = ("ok", ">1%", ">10%", "nan", "exception", "refused")
 #: Cells where the exact force is below this fraction of F_m are marked (not judged).
@@ -27,13 +35,15 @@ QUIET = 1e-6
 ERR_RANGE = (1e-8, 1.0)
 
 
-def grid(quick: bool = False):
+def grid(quick: bool = False) -> tuple[FloatArray, FloatArray]:
+    """The lambdas and the fractions s = tau / tau_d of the map (coarser with ``quick``)."""
     lams = np.linspace(0.0, 10.0, 21 if quick else 41)
     s = np.linspace(0.0, 1.0, 11 if quick else 21)
     return lams, s
 
 
-def classify(err: np.ndarray) -> np.ndarray:
+def classify(err: FloatArray) -> Cells:
+    """The class of each error: "ok", ">1%", ">10%" or "nan" (non-finite)."""
     out = np.full(err.shape, "ok", dtype=object)
     out[err > 0.01] = ">1%"
     out[err > 0.10] = ">10%"
@@ -41,35 +51,46 @@ def classify(err: np.ndarray) -> np.ndarray:
     return out
 
 
-def run(methods, quick: bool = False):
+class ErrorMap(NamedTuple):
+    """What :func:`run` measures (a tuple: ``result, lams, s, errors, small = run(...)``)."""
+
+    #: method name -> array of classes, shape (len(lams), len(s))
+    result: dict[str, Cells]
+    #: the grid's lambdas
+    lams: FloatArray
+    #: the grid's tau / tau_d
+    s: FloatArray
+    #: method name -> force error |F - F_ref| / F_m,ref (NaN where refused or failed)
+    errors: dict[str, FloatArray]
+    #: cells where the exact force is below ``SMALL_FORCE`` F_m
+    small: npt.NDArray[np.bool_]
+
+
+def run(methods: Sequence[Method], quick: bool = False) -> ErrorMap:
     """Classes and errors of each method on the grid.
 
     Returns
     -------
-    result : dict
-        method name -> array of classes, shape (len(lams), len(s)).
-    lams, s : ndarray
-        The grid.
-    errors : dict
-        method name -> force error |F - F_ref| / F_m,ref (NaN where refused or failed).
-    small : ndarray of bool
-        Cells where the exact force is below ``SMALL_FORCE`` F_m.
+    ErrorMap
+        result, lams, s, errors, small (see :class:`ErrorMap`).
     """
     lams, s = grid(quick)
     refs = [exact.solve(x) for x in lams]
     taus = [r.tau_d * s for r in refs]
     fref = [r.history(t)["force"] for r, t in zip(refs, taus)]
     small = np.array([f < SMALL_FORCE * r.F_m for f, r in zip(fref, refs)])
-    result, errors = {}, {}
+    result: dict[str, Cells] = {}
+    errors: dict[str, FloatArray] = {}
     for m in methods:
-        if m.force is None:
+        force = m.force
+        if force is None:
             continue
         cells = np.empty((len(lams), len(s)), dtype=object)
         errs = np.full((len(lams), len(s)), np.nan)
         for i, lam in enumerate(lams):
             try:
                 with np.errstate(all="ignore"):
-                    f = np.asarray(m.force(np.array([lam]), [taus[i]])[0], dtype=float)
+                    f = np.asarray(force(np.array([lam]), [taus[i]])[0], dtype=float)
                 errs[i] = np.abs(f - fref[i]) / refs[i].F_m
                 cells[i] = classify(errs[i])
             except ValueError:
@@ -78,16 +99,16 @@ def run(methods, quick: bool = False):
                 cells[i] = "exception"
         result[m.name] = cells
         errors[m.name] = errs
-    return result, lams, s, errors, small
+    return ErrorMap(result, lams, s, errors, small)
 
 
-def quiet_methods(result, errors) -> list:
+def quiet_methods(result: Mapping[str, Cells], errors: Mapping[str, FloatArray]) -> list[str]:
     """Methods with nothing to show: every cell answered and its error below ``QUIET``."""
     return [n for n in result
             if np.all(result[n] == "ok") and np.nanmax(errors[n]) < QUIET]
 
 
-def summary_rows(result, lams):
+def summary_rows(result: Mapping[str, Cells], lams: FloatArray) -> list[dict[str, str]]:
     """Per method: the smallest lambda at which each failure class first appears."""
     rows = []
     for name, cells in result.items():
@@ -99,7 +120,10 @@ def summary_rows(result, lams):
     return rows
 
 
-def write_csv(result, lams, s, path: pathlib.Path, errors=None, small=None) -> None:
+def write_csv(result: Mapping[str, Cells], lams: FloatArray, s: FloatArray, path: pathlib.Path,
+              errors: Mapping[str, FloatArray] | None = None,
+              small: npt.NDArray[np.bool_] | None = None) -> None:
+    """The map as CSV: one row per method and cell (class, error, small-force mark)."""
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["method", "lambda", "tau_over_tau_d", "class", "force_error",
@@ -113,7 +137,9 @@ def write_csv(result, lams, s, path: pathlib.Path, errors=None, small=None) -> N
                     w.writerow([name, f"{lam:.4g}", f"{sj:.4g}", cells[i, j], err, sm])
 
 
-def chart(result, lams, s, path: pathlib.Path, errors=None, small=None) -> None:
+def chart(result: Mapping[str, Cells], lams: FloatArray, s: FloatArray, path: pathlib.Path,
+          errors: Mapping[str, FloatArray] | None = None,
+          small: npt.NDArray[np.bool_] | None = None) -> None:
     """The error map: one panel per method that has something to show (package style)."""
     from ..plot import style as st
 

@@ -6,23 +6,26 @@ import csv
 import pathlib
 import platform
 import time
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
 from . import methods as methods_mod, reference, stability, targets, workprecision
+from .methods import Method
 
 
-def _md_table(header, rows):
+def _md_table(header: Sequence[str], rows: Sequence[Mapping[str, object]]) -> str:
+    """A markdown table of ``rows``' values under ``header``."""
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(str(r[h]) for h in header) + " |" for r in rows]
     return "\n".join(lines)
 
 
-def representative(methods):
+def representative(methods: Sequence[Method]) -> list[Method]:
     """One method per family for the stability map: the sweep's 1e-6 point, or the only one.
     mpmath backends are left out (about 1 s per point); they evaluate the same closed forms as
     the numpy kernels, which the tests hold to 1e-10 of them."""
-    by_fam = {}
+    by_fam: dict[str, Method] = {}
     for m in methods:
         if m.extra.get("stride", 1) > 1:
             continue
@@ -32,7 +35,10 @@ def representative(methods):
     return list(by_fam.values())
 
 
-def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str:
+def run(out: pathlib.Path, quick: bool = False, log: Callable[[str], object] = print,
+        markdown: pathlib.Path | None = None) -> str:
+    """Run the whole benchmark into ``out`` and write BENCHMARKS.md there (and a copy at
+    ``markdown``, its image links relative to it); returns the markdown text."""
     t_start = time.perf_counter()
     out.mkdir(parents=True, exist_ok=True)
     ref = reference.load()
@@ -53,7 +59,7 @@ def run(out: pathlib.Path, quick: bool = False, log=print, markdown=None) -> str
             w.writerows(tg)
     elapsed = time.perf_counter() - t_start
 
-    best = {}
+    best: dict[tuple[str, str], workprecision.WorkRow] = {}
     for r in rows:
         if r["status"] == "ok" and np.isfinite(r["max_rel_error"]):
             key = (r["family"], r["quantity"])

@@ -1,5 +1,12 @@
-"""Speed targets, as ratios measured side by side in one run (issue 6, item 4)."""
+"""Speed targets, as ratios measured side by side in one run (issue 6, item 4).
+
+A target is a row (a dict): ``target`` and ``grid`` (what is compared, on what), ``fast_s`` and
+``slow_s`` (the two times, seconds), ``ratio`` (slow / fast, or budget / time), ``required`` (the
+least ratio that meets it) and, once checked, ``met``.
+"""
 from __future__ import annotations
+
+from typing import Any
 
 import numpy as np
 
@@ -8,7 +15,8 @@ from .methods import dop853_force_loop
 from .timing import median_time
 
 
-def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200, quick: bool = False) -> dict | None:
+def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200,
+                   quick: bool = False) -> dict[str, Any] | None:
     """ham1 (numpy) force history on n_lam x n_tau against a per-lambda scipy DOP853 solve with
     dense output at rtol 1e-6 (the textbook set-up: tau from 0, guarded RHS, event delta = 0).
 
@@ -23,10 +31,10 @@ def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200, quick: bool = False) -> d
     s = np.linspace(0.0, 1.0, n_tau)
     tau = zs.summary(lams, model="ham0").tau_d[:, None] * 1.6 * s  # covers the first-order contact
 
-    def fast():
+    def fast() -> object:
         return zs.history(lams[:, None], tau, model="ham1", fields="force").force
 
-    def loop():
+    def loop() -> object:
         return dop853_force_loop(lams, tau)
 
     t_fast = median_time(fast, min_repeats=3 if not quick else 1, min_total=0.2)
@@ -36,7 +44,7 @@ def ham1_vs_dop853(n_lam: int = 200, n_tau: int = 200, quick: bool = False) -> d
             "ratio": t_loop / t_fast, "required": 50.0}
 
 
-def ham1_numpy_vs_mpmath(quick: bool = False) -> dict | None:
+def ham1_numpy_vs_mpmath(quick: bool = False) -> dict[str, Any] | None:
     """Per-point time of ham1 numpy (on a 200 x 200 grid) against ham1 mpmath (a few points)."""
     if "ham1" not in REGISTRY or "backend" not in REGISTRY["ham1"].options:
         return None
@@ -53,7 +61,8 @@ def ham1_numpy_vs_mpmath(quick: bool = False) -> dict | None:
             "fast_s": t_np, "slow_s": t_mp, "ratio": t_mp / t_np, "required": 1000.0}
 
 
-def run(quick: bool = False) -> list[dict]:
+def run(quick: bool = False) -> list[dict[str, Any]]:
+    """Every speed target of the package, each row with ``met`` set."""
     rows = []
     for fn in (ham1_vs_dop853, ham1_numpy_vs_mpmath):
         r = fn(quick=quick)

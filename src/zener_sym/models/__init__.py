@@ -1,6 +1,6 @@
 """Every model of the impact behind one interface; each registers itself in ``REGISTRY``."""
-from .base import (HISTORY_FIELDS, REGISTRY, SUMMARY_FIELDS, FieldUnavailableError, Model,
-    get_model, register)
+from .base import (HISTORY_FIELDS, REGISTRY, SUMMARY_FIELDS, FieldUnavailableError, FieldValues,
+    Model, computed_bound, get_model, register)
 from . import exact  # noqa: F401  (registers "exact")
 from . import ham0_ham1  # noqa: F401  (registers "ham0", "ham1")
 from . import ham_any_order  # noqa: F401  (registers "ham": any order, Liao's c0)
@@ -10,4 +10,4 @@ from . import fits  # noqa: F401  (registers "fits")
 from . import series  # noqa: F401  (registers "series")
 
 __all__ = ["Model", "REGISTRY", "register", "get_model", "SUMMARY_FIELDS", "HISTORY_FIELDS",
-           "FieldUnavailableError"]
+           "FieldUnavailableError", "FieldValues", "computed_bound"]

@@ -27,19 +27,46 @@ Every option value is validated before any work (``exact.solver.check_options``,
 """
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
+from typing import Any, Protocol
+
 import numpy as np
+import numpy.typing as npt
 
 from ..exact import force_end as _force
 from ..exact import force_table as _force_fast
 from ..exact import mp as _exact_mp
 from ..exact import solver as _exact
 from ..exact import table as _fast
-from .base import Model, register
+from ..typing import FloatArray
+from .base import FieldValues, Model, register
 
 BACKENDS = ("auto", "table", "scipy", "mpmath")
 
 
+class _Tables(Protocol):
+    """What the model takes of a table module: ``exact.table`` (the plate) or
+    ``exact.force_table`` (the force-free end)."""
+
+    def summary(self, lam: FloatArray) -> Mapping[str, Any]: ...
+
+    def history(self, lam: FloatArray, tau: FloatArray) -> Mapping[str, Any]: ...
+
+
+class _Solution(Protocol):
+    """One lambda's integrated solution (scipy or mpmath, either end): the summary fields are
+    its attributes."""
+
+    def history(self, tau: FloatArray) -> Mapping[str, Any]: ...
+
+
+#: The integrator and its options for the lambdas the tables do not answer.
+_Integration = tuple[str, dict[str, Any]]
+
+
 class ExactModel(Model):
+    """The model ``"exact"``: Eq. (10) solved exactly (options and backends: module docstring)."""
+
     name = "exact"
     description = ("Zener's equation (10) solved exactly: Chebyshev tables (summary for "
                    "0 <= lambda <= 1000, summary and history), direct integration on request")
@@ -50,7 +77,8 @@ class ExactModel(Model):
     bound_reason = "the range over which the integrator is tested"
     options = ("rtol", "method", "backend", "dps", "contact_end")
 
-    def _split(self, lam, options, history=False):
+    def _split(self, lam: FloatArray, options: Mapping[str, Any], history: bool = False
+               ) -> tuple[npt.NDArray[np.bool_], _Integration | None, _Tables]:
         """Mask of lambda to take from the tables, the options left for integration, and the
         table module (the plate's or the force-free end's).
 
@@ -59,19 +87,21 @@ class ExactModel(Model):
         grid) is checked once per line and gets a broadcast mask, not one of the grid's size."""
         options = dict(options)
         backend = options.pop("backend", "auto")
+        tab: _Tables
+        check: Callable[[FloatArray], npt.NDArray[np.bool_]]
         end = _force.check_contact_end(options.get("contact_end", "delta"))
         if end == "force":
             tab = _force_fast
             check = _force_fast.in_range
-            top = _force_fast.LAM_MAX
+            lo, top = _force_fast.LAM_MIN, _force_fast.LAM_MAX
         else:
             options.pop("contact_end", None)
             tab = _fast
             check = _fast.history_in_range if history else _fast.in_range
-            top = _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
+            lo, top = _fast.LAM_MIN, _fast.HISTORY_LAM_MAX if history else _fast.LAM_MAX
         column = lam.ndim >= 1 and lam.shape[-1] > 1 and lam.strides[-1] == 0
 
-        def in_range(x):
+        def in_range(x: FloatArray) -> npt.NDArray[np.bool_]:
             return np.broadcast_to(check(x[..., :1]), x.shape) if column else check(x)
 
         if not isinstance(backend, str) or backend not in BACKENDS:
@@ -94,7 +124,7 @@ class ExactModel(Model):
                 bad = float(lam[~in_range(lam)].ravel()[0])
                 raise ValueError(
                     f"lambda = {bad!r} is outside the exact {'history' if history else 'summary'}"
-                    f" table's range [{tab.LAM_MIN:g}, {top:g}]; use backend='auto' "
+                    f" table's range [{lo:g}, {top:g}]; use backend='auto' "
                     f"(integrates outside) or 'scipy'")
             return np.broadcast_to(True, lam.shape), None, tab
         if backend == "auto":
@@ -106,21 +136,22 @@ class ExactModel(Model):
                 return in_range(lam), ("scipy", options), tab
         return np.broadcast_to(False, lam.shape), (backend, options), tab
 
-    def _solutions(self, lam_values, backend, options):
+    def _solutions(self, lam_values: FloatArray, backend: str,
+                   options: Mapping[str, Any]) -> dict[float, _Solution]:
         options = dict(options)
         force = options.pop("contact_end", "delta") == "force"
         if backend == "scipy":
             if "dps" in options:
                 raise ValueError("option 'dps' goes with backend='mpmath'")
-            solve = _force.solve if force else _exact.solve
+            solve: Callable[..., _Solution] = _force.solve if force else _exact.solve
             return {float(x): solve(x, **options) for x in np.unique(lam_values)}
         bad = set(options) - {"dps"}
         if bad:
             raise ValueError(f"option {sorted(bad)[0]!r} does not go with backend='mpmath'")
-        solve = _force.solve_mp if force else _exact_mp.solve
-        return {float(x): solve(x, **options) for x in np.unique(lam_values)}
+        solve_mp: Callable[..., _Solution] = _force.solve_mp if force else _exact_mp.solve
+        return {float(x): solve_mp(x, **options) for x in np.unique(lam_values)}
 
-    def _summary(self, lam, **options):
+    def _summary(self, lam: FloatArray, **options: Any) -> FieldValues:
         fast, rest, tab = self._split(lam, options)
         out = {f: np.empty(lam.shape) for f in self.summary_fields}
         if fast.any():
@@ -128,6 +159,7 @@ class ExactModel(Model):
             for f in self.summary_fields:
                 out[f][fast] = v[f]
         if not fast.all():
+            assert rest is not None  # None only with backend="table", where fast is all True
             sols = self._solutions(lam[~fast], *rest)
             for i in zip(*np.nonzero(~fast)):
                 s = sols[float(lam[i])]
@@ -135,7 +167,7 @@ class ExactModel(Model):
                     out[f][i] = float(getattr(s, f))
         return out
 
-    def _history(self, lam, tau, **options):
+    def _history(self, lam: FloatArray, tau: FloatArray, **options: Any) -> FieldValues:
         fast, rest, tab = self._split(lam, options, history=True)
         if fast.all():  # shapes kept (the table sees a broadcast lambda column as such)
             v = tab.history(lam, tau)
@@ -146,6 +178,7 @@ class ExactModel(Model):
             for f in self.history_fields:
                 out[f][fast] = v[f]
         if not fast.all():
+            assert rest is not None  # None only with backend="table", where fast is all True
             sols = self._solutions(lam[~fast], *rest)
             for x, s in sols.items():
                 mask = (lam == x) & ~fast

@@ -16,25 +16,41 @@ Eq. (80) is real. The audit checks the paper's claims about each fit (AUDIT.md, 
 """
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
+from ..typing import FloatArray, RealArrayLike
 from . import formulas as fm
-from .base import Model, register
+from .base import FieldValues, Model, register
 
 __all__ = ["INT_F2_POLY", "int_F2_fit"]
 
 #: Coefficients of the paper's quadratic for int F^2 (Sec. 3.5), constant term first.
-INT_F2_POLY = (1.78, -2.79, 2.36)
+INT_F2_POLY: tuple[float, float, float] = (1.78, -2.79, 2.36)
 
 
-def int_F2_fit(lam):
-    """The paper's 1.78 - 2.79 lambda + 2.36 lambda^2 (Sec. 3.5)."""
+def int_F2_fit(lam: RealArrayLike) -> FloatArray:
+    """The paper's 1.78 - 2.79 lambda + 2.36 lambda^2 (Sec. 3.5).
+
+    Parameters
+    ----------
+    lam : float or array_like
+        Zener's lambda (Eq. 11), >= 0 (not checked).
+
+    Returns
+    -------
+    numpy.ndarray
+        The fitted int F^2 dtau, of the shape of ``lam``.
+    """
     lam = np.asarray(lam, dtype=float)
     c0, c1, c2 = INT_F2_POLY
     return c0 + lam * (c1 + lam * c2)
 
 
 class Fits(Model):
+    """The model ``"fits"``: the paper's explicit fits, Eqs. (24), (55), (70), (80), Sec. 3.5."""
+
     name = "fits"
     description = ("the paper's fits: delta_m Eq. (24), tau_d Eq. (55), e Eq. (80), xi Eq. (70), "
                    "int F^2 quadratic of Sec. 3.5")
@@ -43,7 +59,7 @@ class Fits(Model):
     lam_bound = fm.LAM_CRIT
     bound_reason = "Eq. (80) is real only while k lambda^2 < 4 (Eq. 81)"
 
-    def _summary(self, lam, **options):
+    def _summary(self, lam: FloatArray, **options: Any) -> FieldValues:
         return {"delta_m": fm.delta_m_fit_24(lam), "tau_d": fm.tau_d_fit_55(lam), "e": fm.e0(lam),
                 "xi": fm.xi_fit_70(lam), "int_F2": int_F2_fit(lam)}
 

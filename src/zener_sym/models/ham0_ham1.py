@@ -13,30 +13,37 @@ after which delta and the force are 0 and the impulse keeps its final value. ``x
 """
 from __future__ import annotations
 
+import types
+from collections.abc import Collection, Mapping
+from typing import Any
+
 import mpmath
 import numpy as np
 
 from ..numerics.blocks import field_buffers, line_blocks
-from .base import Model, register
+from ..typing import FloatArray
+from .base import FieldValues, Model, computed_bound, register
 
 #: Points per block of ham0's history (about 16 000: each block calls the generated kernels,
 #: whose input checks cost about 25 us a call).
 _BLOCK = 16384
 
 
-def _gen(name):
+def _gen(name: str) -> types.SimpleNamespace:
     """The HAM kernels ``name`` ("ham0_numpy", "ham1_mpmath", ...: ``ham0``/``ham1`` of
-    ``zener_sym.ham.runtime_numpy`` or ``runtime_mpmath``), imported on first use:
-    ``zener-sym generate`` must run (and rewrite generated/) even when the committed kernels
-    are stale or broken."""
+    ``zener_sym.ham.runtime_numpy`` or ``runtime_mpmath``, namespaces of functions), imported
+    on first use: ``zener-sym generate`` must run (and rewrite generated/) even when the
+    committed kernels are stale or broken."""
     import importlib
 
     order, backend = name.split("_")
     module = {"numpy": "zener_sym.ham.runtime_numpy", "mpmath": "zener_sym.ham.runtime_mpmath"}
-    return getattr(importlib.import_module(module[backend]), order)
+    kernels: types.SimpleNamespace = getattr(importlib.import_module(module[backend]), order)
+    return kernels
 
 
-def _backend(options):
+def _backend(options: Mapping[str, Any]) -> tuple[str, int]:
+    """The checked backend and mpmath digits (30 unless ``dps`` is given)."""
     backend = options.get("backend", "numpy")
     if backend not in ("numpy", "mpmath"):
         raise ValueError(f"unknown backend {backend!r}; allowed: 'numpy', 'mpmath'")
@@ -59,13 +66,16 @@ class _HamModel(Model):
                     "below it, Eq. (81)")
     options = ("backend", "dps")
 
-    @property
-    def lam_bound(self):
+    @computed_bound
+    def lam_bound(self) -> float:
         """lam_crit from the generated module (emitted from the derivation)."""
-        return _gen("ham1_numpy").LAM_CRIT
+        bound: float = _gen("ham1_numpy").LAM_CRIT
+        return bound
 
     @staticmethod
-    def _finish(d):
+    def _finish(d: Mapping[str, Any]) -> FieldValues:
+        """The summary fields from the kernels' delta_m, tau_dc, tau_d, e, F_m, impulse, int_F2
+        (float arrays, or sequences of mpf)."""
         out = {f: np.asarray(d[f], dtype=float) for f in ("delta_m", "tau_dc", "tau_d", "e", "F_m",
                                                            "impulse", "int_F2")}
         out["tau_dr"] = out["tau_d"] - out["tau_dc"]
@@ -75,10 +85,12 @@ class _HamModel(Model):
 
 
 class Ham0(_HamModel):
+    """The model ``"ham0"``: the zeroth-order HAM solution, Eq. (35)."""
+
     name = "ham0"
     description = "zeroth-order HAM solution, Eq. (35): damped sine, closed forms (54)-(61), (79)"
 
-    def _summary(self, lam, **options):
+    def _summary(self, lam: FloatArray, **options: Any) -> FieldValues:
         backend, dps = _backend(options)
         h0, m0 = _gen("ham0_numpy"), _gen("ham0_mpmath")
         if backend == "numpy":
@@ -88,7 +100,8 @@ class Ham0(_HamModel):
 
     selects_fields = True
 
-    def _history(self, lam, tau, fields=None, **options):
+    def _history(self, lam: FloatArray, tau: FloatArray, fields: Collection[str] | None = None,
+                 **options: Any) -> FieldValues:
         backend, dps = _backend(options)
         h0, m0 = _gen("ham0_numpy"), _gen("ham0_mpmath")
         want = set(self.history_fields if fields is None else fields)
@@ -107,7 +120,8 @@ class Ham0(_HamModel):
         return {"delta": d, "force": force, "impulse": imp, "velocity": 1.0 - imp}
 
     @staticmethod
-    def _history_numpy(h0, lam, tau, want):
+    def _history_numpy(h0: types.SimpleNamespace, lam: FloatArray, tau: FloatArray,
+                       want: set[str]) -> FieldValues:
         """The numpy history, one block of lines at a time (``blocks.line_blocks``): the generated
         delta0 (35) on its contact (``delta_contact``), and the impulse (47) omega0^{-5/2}
         K_s(3 beta / (2 omega0), omega0 tau) from the per-rate Chebyshev series of K_s
@@ -161,17 +175,19 @@ class Ham0(_HamModel):
 
 
 class Ham1(_HamModel):
+    """The model ``"ham1"``: the first-order HAM solution, Eq. (42)."""
+
     name = "ham1"
     description = ("first-order HAM solution, Eq. (42): delta0 + delta1, contact end by root "
                    "finding, impulse by quadrature of the force (per-lambda Chebyshev series; "
                    "summary from Chebyshev tables in lambda)")
 
-    def _summary(self, lam, **options):
+    def _summary(self, lam: FloatArray, **options: Any) -> FieldValues:
         backend, dps = _backend(options)
         h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
         if backend == "numpy":
             return self._finish(_ham1_summary_numpy(h1, lam))
-        rows = []
+        rows: list[dict[str, Any]] = []
         for x in lam:
             with mpmath.workdps(dps):
                 tdc = m1.compression_end(float(x))
@@ -191,7 +207,8 @@ class Ham1(_HamModel):
 
     selects_fields = True
 
-    def _history(self, lam, tau, fields=None, **options):
+    def _history(self, lam: FloatArray, tau: FloatArray, fields: Collection[str] | None = None,
+                 **options: Any) -> FieldValues:
         backend, dps = _backend(options)
         h1, m1 = _gen("ham1_numpy"), _gen("ham1_mpmath")
         want = set(self.history_fields if fields is None else fields)
@@ -212,7 +229,7 @@ class Ham1(_HamModel):
         return {"delta": d, "force": d**1.5, "impulse": imp, "velocity": 1.0 - imp}
 
 
-def _ham1_summary_numpy(h1, lam):
+def _ham1_summary_numpy(h1: types.SimpleNamespace, lam: FloatArray) -> FieldValues:
     """ham1 summary in float64: the Chebyshev tables in lambda (``zener_sym.ham.table``, relative
     error below ``table.SUMMARY_RTOL``) where they cover lambda, which is all of
     0 <= lambda < lam_crit; elsewhere the per-lambda series of ``zener_sym.ham.spectral``, with the
@@ -231,7 +248,8 @@ def _ham1_summary_numpy(h1, lam):
     return out
 
 
-def _ham1_history_numpy(h1, lam, tau, want):
+def _ham1_history_numpy(h1: types.SimpleNamespace, lam: FloatArray, tau: FloatArray,
+                        want: set[str]) -> FieldValues:
     """ham1 histories in float64: the per-lambda Chebyshev series of ``zener_sym.ham.spectral``,
     and the quadrature kernels for the lambda values whose series fail their own check (near
     the critical lambda).
@@ -248,7 +266,7 @@ def _ham1_history_numpy(h1, lam, tau, want):
     if tab.any():
         td_tab[tab] = ham1_table.summary(u[tab])["tau_d"]
     series.tau_d = np.where(series.ok & tab, td_tab, series.tau_d)
-    out = {}
+    out: FieldValues = {}
     need_imp = bool(want & {"impulse", "velocity"})
     if want & {"delta", "force"}:
         d = series.delta(rows, tau)

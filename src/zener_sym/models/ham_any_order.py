@@ -21,16 +21,21 @@ docs/ham_convergence.md measures both formulations against the exact solution.
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
+from typing import Any
+
 import numpy as np
 
 from ..ham import higher
-from .base import Model, register
+from ..typing import FloatArray
+from .base import FieldValues, Model, computed_bound, register
 
 _SUMMARY = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2",
             "xi")
 
 
-def _opts(options):
+def _opts(options: Mapping[str, Any]) -> tuple[int, float | None, str]:
+    """The checked (order, c0, formulation); ValueError naming the allowed values."""
     formulation = higher.check_formulation(options.get("formulation", "paper"))
     order = higher.check_order(options.get("order", 1), formulation)
     c0 = options.get("c0")
@@ -40,6 +45,8 @@ def _opts(options):
 
 
 class HamSeries(Model):
+    """The model ``"ham"``: the HAM series to a chosen order (options: module docstring)."""
+
     name = "ham"
     description = ("HAM series to a chosen order with Liao's convergence control c0 (options "
                    "order, c0, formulation='paper' or 'strained'); spectral solution of each "
@@ -53,13 +60,15 @@ class HamSeries(Model):
     # with the default optimal c0: not a candidate of select_model
     in_envelopes = False
 
-    @property
-    def lam_bound(self):
+    @computed_bound
+    def lam_bound(self) -> float:
+        """lam_crit of the numpy runtime (emitted from the derivation), read when asked for."""
         from ..ham.runtime_numpy import LAM_CRIT
 
-        return LAM_CRIT
+        bound: float = LAM_CRIT
+        return bound
 
-    def _summary(self, lam, **options):
+    def _summary(self, lam: FloatArray, **options: Any) -> FieldValues:
         order, c0, formulation = _opts(options)
         rows = [higher.solve(float(x), order, c0, formulation) for x in lam]
         out = {f: np.array([r.summary()[f] for r in rows]) for f in
@@ -70,7 +79,7 @@ class HamSeries(Model):
         out["c0"] = np.array([r.c0 for r in rows])  # reported: s.c0
         return out
 
-    def _history(self, lam, tau, **options):
+    def _history(self, lam: FloatArray, tau: FloatArray, **options: Any) -> FieldValues:
         order, c0, formulation = _opts(options)
         out = {f: np.empty(tau.shape) for f in self.history_fields}
         for x in np.unique(lam):

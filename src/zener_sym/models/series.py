@@ -23,12 +23,15 @@ from __future__ import annotations
 
 import json
 from importlib import resources
+from typing import TypedDict
 
 import numpy as np
+import numpy.typing as npt
 
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
-from .base import Model, register
+from ..typing import FloatArray, RealArrayLike
+from .base import FieldValues, Model, register
 
 __all__ = ["SeriesModel", "CROSSOVERS", "RTOLS", "coefficients"]
 
@@ -36,18 +39,34 @@ __all__ = ["SeriesModel", "CROSSOVERS", "RTOLS", "coefficients"]
 #: large-lambda asymptotics or None). Chosen where the largest relative error of e, tau_d, impulse
 #: and xi against the exact model (rtol 1e-13), on a grid of step 0.001, is below rtol/2; the
 #: large side from the size of the first neglected term of tau_d, 0.96 lambda^(-7/3).
-CROSSOVERS = {
+CROSSOVERS: dict[float, dict[str, tuple[float, float | None]]] = {
     1e-3: {"delta": (0.58, 6.0), "force": (0.36, None)},
     1e-6: {"delta": (0.39, 40.0), "force": (0.16, None)},
     1e-9: {"delta": (0.26, 300.0), "force": (0.075, None)},
 }
 RTOLS = tuple(CROSSOVERS)
 
-_DATA = None
+
+class Coefficients(TypedDict):
+    """The series' committed coefficients (``data/lambda_series.json``)."""
+
+    #: name (``e_delta``, ``tau_d_force``, ...) -> coefficients, constant term first
+    small: dict[str, FloatArray]
+    #: name (``K_delta``, ``C_delta``, ``tau_d_corr``) -> constant of the large-lambda forms
+    large: dict[str, float]
 
 
-def coefficients() -> dict:
-    """The committed coefficients: ``small[name]`` (list of float), ``large[name]`` (float)."""
+_DATA: Coefficients | None = None
+
+
+def coefficients() -> Coefficients:
+    """The committed coefficients, read once.
+
+    Returns
+    -------
+    Coefficients
+        ``small[name]``: array of float, constant term first; ``large[name]``: float.
+    """
     global _DATA
     if _DATA is None:
         raw = json.loads((resources.files("zener_sym") / "data" / "lambda_series.json").read_text("utf-8"))
@@ -56,7 +75,7 @@ def coefficients() -> dict:
     return _DATA
 
 
-def _poly(c, x):
+def _poly(c: FloatArray, x: FloatArray) -> FloatArray:
     """sum_{k>=1} c_k x^k (the constant term left out, so 1 - e keeps its relative accuracy)."""
     acc = np.zeros_like(x)
     for ck in c[:0:-1]:
@@ -65,6 +84,8 @@ def _poly(c, x):
 
 
 class SeriesModel(Model):
+    """The model ``"series"``: small-lambda series and large-lambda asymptotics of e and tau_d."""
+
     name = "series"
     description = ("Small-lambda series (perturbation hierarchy) and large-lambda asymptotics of "
                    "e and tau_d; refuses the middle where neither meets rtol")
@@ -74,13 +95,27 @@ class SeriesModel(Model):
     bound_reason = "the range of the exact model it is measured against"
     options = ("contact_end", "rtol")
 
-    def valid(self, lam):
-        """Where the default options (plate end, rtol 1e-6) answer: both ends, not the middle."""
-        lam = np.asarray(lam, dtype=float)
-        lo, hi = CROSSOVERS[1e-6]["delta"]
-        return (lam <= lo) | ((lam >= hi) & (lam < self.lam_bound))
+    def valid(self, lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+        """Where the default options (plate end, rtol 1e-6) answer: both ends, not the middle.
 
-    def _summary(self, lam, contact_end="delta", rtol=1e-6):
+        Parameters
+        ----------
+        lam : float or array_like
+            Lambda values.
+
+        Returns
+        -------
+        numpy.ndarray of bool
+            Of the shape of ``lam``.
+        """
+        x: FloatArray = np.asarray(lam, dtype=float)
+        lo, hi = CROSSOVERS[1e-6]["delta"]
+        assert hi is not None and self.lam_bound is not None  # the plate end has both ranges
+        ok: npt.NDArray[np.bool_] = (x <= lo) | ((x >= hi) & (x < self.lam_bound))
+        return ok
+
+    def _summary(self, lam: FloatArray, contact_end: str = "delta",
+                 rtol: float = 1e-6) -> FieldValues:
         end = check_contact_end(contact_end)
         if rtol not in CROSSOVERS:
             raise ValueError(f"rtol={rtol!r} is not one of the measured tolerances of model 'series'; "
@@ -90,11 +125,11 @@ class SeriesModel(Model):
         large = np.zeros_like(small) if hi is None else lam >= hi
         bad = ~(small | large)
         if bad.any():
-            x = float(lam[bad].ravel()[0])
+            x0 = float(lam[bad].ravel()[0])
             where = (f"[0, {lo:g}] (small-lambda series) or [{hi:g}, {LAMBDA_MAX:g}] (large-lambda "
                      f"asymptotics)" if hi is not None else
                      f"[0, {lo:g}] (small-lambda series; no large-lambda form for contact_end='force')")
-            raise ValueError(f"lambda = {x!r} is outside the range where model 'series' meets "
+            raise ValueError(f"lambda = {x0!r} is outside the range where model 'series' meets "
                              f"rtol={rtol:g} with contact_end={end!r}: allowed {where}; use model "
                              f"'exact' there")
         C = coefficients()

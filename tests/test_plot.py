@@ -85,3 +85,19 @@ def test_restitution_curves_stop_at_each_models_bound():
     assert np.allclose(ex.get_ydata(), zs.summary(ex.get_xdata()).e)
     assert ra.get_xdata().max() < 1 / 1.73 and li.get_xdata().max() <= 2.4
     plt.close(fig)
+
+
+def test_figure_legend_from_handles_alone_takes_their_labels():
+    # handles without labels raised a TypeError from len(None) (found by typing, issue 26);
+    # an axes' legend takes the handles' own labels, and so does a figure's now
+    fig, (a, b) = plt.subplots(1, 2)
+    la, = a.plot([0, 1], [0, 1], label="first")
+    lb, = b.plot([0, 1], [1, 0], label="second")
+    b.plot([0, 1], [1, 1], label="not listed")
+    for ncol in (None, 1):
+        leg = style.legend_outside(fig, handles=[lb, la], ncol=ncol)
+        assert [t.get_text() for t in leg.get_texts()] == ["second", "first"]
+        assert leg.legend_handles[0].get_color() == lb.get_color()
+    leg = style.legend_outside(fig, handles=[la], labels=["renamed"])
+    assert [t.get_text() for t in leg.get_texts()] == ["renamed"]
+    plt.close(fig)

@@ -15,10 +15,10 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from zener_sym.plot import curves, force_history, restitution, style  # noqa: E402
+from zener_sym.plot import calibration, curves, force_history, restitution, style  # noqa: E402
 
 
-@pytest.mark.parametrize("module", [style, curves])
+@pytest.mark.parametrize("module", [style, curves, calibration])
 def test_docstring_examples_run(module):
     res = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
     assert res.attempted > 0 and res.failed == 0

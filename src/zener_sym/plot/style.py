@@ -28,8 +28,9 @@ __all__ = ["pyplot", "rc", "style_for", "label", "LABELS", "MODEL_STYLES", "METH
            "LAMBDA_COLORS",
            "COLUMN_WIDTH", "PAGE_WIDTH", "legend_outside", "save", "ERROR_LABEL", "error_label"]
 
-#: Figure widths in inches: one journal column, the full page.
+#: Figure width of one journal column, in inches (the default width of the charts).
 COLUMN_WIDTH: float = 3.5
+#: Figure width of a full page, in inches.
 PAGE_WIDTH: float = 7.2
 
 _OI = {"black": "#000000", "orange": "#E69F00", "sky": "#56B4E9", "green": "#009E73",

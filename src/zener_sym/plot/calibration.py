@@ -89,6 +89,8 @@ def fit_chart(fit: FittedDissipation, path: str | os.PathLike[str] | None = None
     ------
     ImportError
         matplotlib (the ``plot`` extra) is not installed.
+    ValueError
+        The suffix of ``path`` is a format matplotlib does not write.
 
     Examples
     --------

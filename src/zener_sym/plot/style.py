@@ -360,6 +360,11 @@ def save(fig: Figure, path: str | os.PathLike[str],
     list of pathlib.Path
         The written files, in the order of ``formats``.
 
+    Raises
+    ------
+    ValueError
+        A format matplotlib does not write (its message lists those it does).
+
     Examples
     --------
     >>> import matplotlib

@@ -222,7 +222,8 @@ def pyplot(headless: bool = False) -> ModuleType:
         matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    return plt
+    module: ModuleType = plt  # a module to mypy also where matplotlib ships no type hints
+    return module
 
 
 #: rcParams of the style: 8 pt text at 3.5 in width, thin grids, no top/right spines.

@@ -42,8 +42,9 @@ class FittedDissipation(Protocol):
     @property
     def confidence(self) -> float: ...  # level of A's interval, e.g. 0.95
 
-    def predict(self, v0: FloatArray) -> Mapping[str, FloatArray]:
-        """Fitted ``"e"`` and its interval ``"e_low"``, ``"e_high"`` at the speeds ``v0``."""
+    def predict(self, v0: FloatArray) -> Mapping[str, float | FloatArray]:
+        """Fitted ``"e"`` and its interval ``"e_low"``, ``"e_high"`` at the speeds ``v0``
+        (arrays here; a fit gives floats for one speed)."""
         ...
 
 

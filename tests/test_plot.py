@@ -15,10 +15,10 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from zener_sym.plot import curves, force_history, restitution, style  # noqa: E402
+from zener_sym.plot import calibration, curves, force_history, restitution, style  # noqa: E402
 
 
-@pytest.mark.parametrize("module", [style, curves])
+@pytest.mark.parametrize("module", [style, curves, calibration])
 def test_docstring_examples_run(module):
     res = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
     assert res.attempted > 0 and res.failed == 0
@@ -84,4 +84,20 @@ def test_restitution_curves_stop_at_each_models_bound():
     ex, ra, li = ax.get_lines()
     assert np.allclose(ex.get_ydata(), zs.summary(ex.get_xdata()).e)
     assert ra.get_xdata().max() < 1 / 1.73 and li.get_xdata().max() <= 2.4
+    plt.close(fig)
+
+
+def test_figure_legend_from_handles_alone_takes_their_labels():
+    # handles without labels raised a TypeError from len(None) (found by typing, issue 26);
+    # an axes' legend takes the handles' own labels, and so does a figure's now
+    fig, (a, b) = plt.subplots(1, 2)
+    la, = a.plot([0, 1], [0, 1], label="first")
+    lb, = b.plot([0, 1], [1, 0], label="second")
+    b.plot([0, 1], [1, 1], label="not listed")
+    for ncol in (None, 1):
+        leg = style.legend_outside(fig, handles=[lb, la], ncol=ncol)
+        assert [t.get_text() for t in leg.get_texts()] == ["second", "first"]
+        assert leg.legend_handles[0].get_color() == lb.get_color()
+    leg = style.legend_outside(fig, handles=[la], labels=["renamed"])
+    assert [t.get_text() for t in leg.get_texts()] == ["renamed"]
     plt.close(fig)

@@ -11,13 +11,17 @@ from __future__ import annotations
 import argparse
 import re
 import sys
+from collections.abc import Sequence
+from types import ModuleType
+from typing import NoReturn
 
 from . import (audit, bench, compare, derive, envelopes, exact_table, figures, fit, generate,
                ham1_table, ham_convergence, regen, report, scene, table)
 
 #: The subcommand modules, in the order ``--help`` lists them.
-COMMANDS = (report, scene, compare, fit, figures, table, regen, generate, derive, audit, bench,
-            envelopes, exact_table, ham1_table, ham_convergence)
+COMMANDS: tuple[ModuleType, ...] = (report, scene, compare, fit, figures, table, regen, generate,
+                                    derive, audit, bench, envelopes, exact_table, ham1_table,
+                                    ham_convergence)
 
 #: A value that starts like a negative number ("-1mm", "-.5"), which argparse would take for an
 #: option; it is joined to its option so that the range checks see it and say what is allowed.
@@ -27,12 +31,12 @@ _NEGATIVE = re.compile(r"^-(\d|\.\d)")
 class Parser(argparse.ArgumentParser):
     """argparse with one-line errors: ``zener-sym COMMAND: error: ...`` and exit code 2."""
 
-    def error(self, message):
+    def error(self, message: str) -> NoReturn:
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def _join_negative_values(argv: list) -> list:
-    out = []
+def _join_negative_values(argv: list[str]) -> list[str]:
+    out: list[str] = []
     for token in argv:
         if out and _NEGATIVE.match(token) and out[-1].startswith("--") and "=" not in out[-1]:
             out[-1] = f"{out[-1]}={token}"
@@ -42,6 +46,7 @@ def _join_negative_values(argv: list) -> list:
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The ``zener-sym`` parser with every subcommand of :data:`COMMANDS`."""
     from .. import __version__
 
     p = Parser(
@@ -56,7 +61,8 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-def main(argv=None) -> int:
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run ``zener-sym`` with ``argv`` (default ``sys.argv[1:]``); returns the exit code."""
     parser = build_parser()
     argv = list(sys.argv[1:] if argv is None else argv)
     try:

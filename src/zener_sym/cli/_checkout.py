@@ -8,12 +8,13 @@ tox or a packager installs a wheel built from it and runs the tests in the clone
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
 
 __all__ = ["CheckoutError", "source_root", "check_result", "ENV"]
 
 #: Environment variable naming the checkout explicitly.
-ENV = "ZENER_SYM_SOURCE"
+ENV: str = "ZENER_SYM_SOURCE"
 
 
 class CheckoutError(ValueError):
@@ -51,7 +52,7 @@ def source_root(command: str) -> Path:
                         "of the installed version")
 
 
-def check_result(diffs, stale: str, fresh: str) -> int:
+def check_result(diffs: Sequence[str], stale: str, fresh: str) -> int:
     """What a ``--check`` prints and returns: the ``stale`` line and each difference, indented
     (exit 1), or the ``fresh`` line (exit 0)."""
     if diffs:

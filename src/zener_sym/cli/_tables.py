@@ -9,13 +9,15 @@ from __future__ import annotations
 import importlib
 import sys
 import time
+from collections.abc import Sequence
+from types import ModuleType
 
 from ..codegen import inputs_hash
 from ._checkout import CheckoutError, source_root
 
 
-def run_table(builder, module: str, fields: tuple, command: str, what: str,
-              check: bool = False) -> int:
+def run_table(builder: ModuleType, module: str, fields: Sequence[tuple[str, str]], command: str,
+              what: str, check: bool = False) -> int:
     """Build (or with ``check``, verify) the table of ``builder``.
 
     Parameters
@@ -26,7 +28,7 @@ def run_table(builder, module: str, fields: tuple, command: str, what: str,
         ``CHECK_RTOL``.
     module : str
         The generated module holding the committed table.
-    fields : tuple of str
+    fields : sequence of (str, str)
         The module's attributes that ``builder.compare`` reads, as (key, attribute) pairs.
     command : str
         The command's name, for messages (``"exact-table"``).

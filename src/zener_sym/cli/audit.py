@@ -1,6 +1,7 @@
 """``zener-sym audit [--json] [--write] [--check]``: the paper audit as a table, JSON or AUDIT.md."""
 from __future__ import annotations
 
+import argparse
 import difflib
 import json
 import sys
@@ -8,11 +9,12 @@ import sys
 from ..audit.markdown import audit_md_path, cached_results, markdown
 from ..audit.run import summary_line
 from ._checkout import CheckoutError, source_root
+from ._types import Subparsers
 
 __all__ = ["add_parser"]
 
 
-def _run(args) -> int:
+def _run(args: argparse.Namespace) -> int:
     root = None
     if args.check or args.write:
         try:  # before any work: the audit takes a while
@@ -45,7 +47,7 @@ def _run(args) -> int:
     return 0
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("audit", help="check the paper's printed equations and claims")
     g = p.add_mutually_exclusive_group()
     g.add_argument("--json", action="store_true", help="print a JSON list of the items")

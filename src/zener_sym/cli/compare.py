@@ -2,19 +2,23 @@
 (:func:`zener_sym.compare`)."""
 from __future__ import annotations
 
+import argparse
 import sys
 
 from ..scene.compare import compare
+from ._types import Out, Subparsers
 from .scene import add_scene_arguments, scene_from_args
 
 __all__ = ["add_parser", "run"]
 
 
-def _names(text):
+def _names(text: str | None) -> list[str] | None:
     return None if text is None else [x.strip() for x in text.split(",") if x.strip()]
 
 
-def run(args, out=print) -> int:
+def run(args: argparse.Namespace, out: Out = print) -> int:
+    """``zener-sym compare``: the table of :func:`zener_sym.compare` for ``--lam`` or a scene;
+    0, or 2 with one line on stderr for bad input."""
     try:
         if args.lam is not None:
             if any(getattr(args, k) is not None for k in ("sphere", "plate", "radius",
@@ -35,7 +39,7 @@ def run(args, out=print) -> int:
     return 0
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("compare", help="every model side by side for one lambda or one scene, "
                        "with its relative error against exact")
     p.add_argument("--lam", type=float, default=None, help="Zener's lambda (instead of a scene)")

@@ -10,11 +10,14 @@ import sys
 import time
 
 from ._checkout import CheckoutError, source_root
+from ._types import Out, Subparsers
 
 __all__ = ["add_parser", "run"]
 
 
-def run(markdown: bool = False, check: bool = False, out=print) -> int:
+def run(markdown: bool = False, check: bool = False, out: Out = print) -> int:
+    """Re-derive and print every step; 0 when all pass (and FORMULAS.md is fresh with
+    ``check``), 1 otherwise, 2 without the source checkout ``markdown``/``check`` need."""
     from ..derivation import formulas, registry
     from ..derivation.steps import format_step
 
@@ -49,7 +52,7 @@ def run(markdown: bool = False, check: bool = False, out=print) -> int:
     return status
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("derive", help="re-derive the HAM solution with SymPy, checking every step")
     p.add_argument("--markdown", action="store_true",
                    help="write the derived equations to FORMULAS.md at the source checkout's root")

@@ -4,12 +4,15 @@ write the table that :func:`zener_sym.select_model` reads (measured by
 ``envelopes`` of ``zener-sym regen``."""
 from __future__ import annotations
 
+import argparse
+
 from ..bench.envelopes import build
 from ..scene.envelopes import compare, load, save
 from ._checkout import check_result
+from ._types import Subparsers
 
 
-def _run(args) -> int:
+def _run(args: argparse.Namespace) -> int:
     new = build()
     if args.check:
         return check_result(compare(load(), new, decades=args.decades),
@@ -20,7 +23,7 @@ def _run(args) -> int:
     return 0
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("envelopes", help="measure every model's error envelope against exact "
                        "and write the table select_model reads")
     p.add_argument("--check", action="store_true",

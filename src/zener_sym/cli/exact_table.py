@@ -4,11 +4,14 @@ force-free end's (:mod:`zener_sym.exact.force_table_build`), both unless one end
 shared body is :mod:`._tables`)."""
 from __future__ import annotations
 
+from types import ModuleType
+
 from ..exact import force_table_build, table_build
 from ._tables import run_table
+from ._types import Subparsers
 
 #: contact_end -> (builder, generated module, what its inputs hash covers)
-TABLES = {
+TABLES: dict[str, tuple[ModuleType, str, str]] = {
     "delta": (table_build, "zener_sym.generated.exact_table", "the builder or the solver"),
     "force": (force_table_build, "zener_sym.generated.exact_force_table",
               "the builder, the solvers or the plate table"),
@@ -16,6 +19,8 @@ TABLES = {
 
 
 def run(check: bool = False, contact_end: str | None = None) -> int:
+    """Build (or with ``check``, verify) the table of ``contact_end``, both by default; the
+    worst exit code of the two."""
     ends = tuple(TABLES) if contact_end is None else (contact_end,)
     code = 0
     # the plate's first: the force-end table anchors its recovery map on the plate table
@@ -27,7 +32,7 @@ def run(check: bool = False, contact_end: str | None = None) -> int:
     return code
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("exact-table", help="build the Chebyshev tables of the fast exact model "
                                            "(plate end and force-free end)")
     p.add_argument("--check", action="store_true",

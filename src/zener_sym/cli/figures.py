@@ -2,10 +2,13 @@
 the paper's Figs. 3-15 against the exact solution (:mod:`zener_sym.figures`)."""
 from __future__ import annotations
 
+import argparse
 import sys
 
+from ._types import Subparsers
 
-def _run(args) -> int:
+
+def _run(args: argparse.Namespace) -> int:
     from ..figures import make as B
 
     try:
@@ -32,7 +35,7 @@ def _run(args) -> int:
     return 0
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("figures", help="the paper's Figs. 3-15 against the exact solution "
                        "(figNN.png and figNN.csv)")
     p.add_argument("--out", default="figures", metavar="DIR",

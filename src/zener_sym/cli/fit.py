@@ -7,17 +7,20 @@ The CSV has a speed column with its unit in the header (``v0_m_s``, ``v0 [cm/s]`
 """
 from __future__ import annotations
 
+import argparse
 import sys
 
 from ..scene.calibrate import fit_dissipation, read_measurements
+from ..scene.materials import Material
 from ..scene.scaling import sphere_mass
 from ..scene.units import si_value
+from ._types import Out, Subparsers
 from .scene import _material, _plot_path
 
 __all__ = ["add_parser", "run"]
 
 
-def _mass(text, radius, material, which):
+def _mass(text: str | None, radius: float, material: Material, which: str) -> float:
     if text is None:
         return sphere_mass(radius, material.rho)
     return _kg(text, which)
@@ -38,25 +41,31 @@ def _kg(text: str, which: str) -> float:
     raise ValueError(f"{which} {text}: give a number with a unit, e.g. 10g or 0.01kg")
 
 
-def run(args, out=print) -> int:
+def run(args: argparse.Namespace, out: Out = print) -> int:
+    """``zener-sym fit``: read the CSV, fit A, print the fit (and ``--plot`` it); 0, or 2 with
+    one line on stderr for bad input."""
     try:
         plot = None if args.plot is None else _plot_path(args.plot)
         data = read_measurements(args.data)
         mat1 = _material(args.sphere, "sphere", None)
         R1 = si_value(args.radius, "length", "--radius")
         m1 = _mass(args.mass, R1, mat1, "--mass")
-        kw = {}
+        # a second sphere, or a wall; neither: a rigid wall (fit_dissipation's defaults, None)
+        R2: float | None = None
+        m2: float | None = None
+        mat2: Material | None = None
+        wall: Material | None = None
         if any(x is not None for x in (args.sphere2, args.radius2, args.mass2)):
             if args.wall is not None:
                 raise ValueError("give either --wall or a second sphere (--sphere2, --radius2), "
                                  "not both")
             mat2 = _material(args.sphere2 or args.sphere, "sphere2", None)
             R2 = si_value(args.radius2 or args.radius, "length", "--radius2")
-            kw.update(R2=R2, m2=_mass(args.mass2, R2, mat2, "--mass2"), material2=mat2)
+            m2 = _mass(args.mass2, R2, mat2, "--mass2")
         elif args.wall is not None and args.wall.lower() != "rigid":
-            kw["wall"] = _material(args.wall, "wall", None)
-        fit = fit_dissipation(data.v0, data.e, R1, m1, mat1, sigma=data.sigma,
-                              contact_end=args.contact_end, **kw)
+            wall = _material(args.wall, "wall", None)
+        fit = fit_dissipation(data.v0, data.e, R1, m1, mat1, sigma=data.sigma, R2=R2, m2=m2,
+                              material2=mat2, wall=wall, contact_end=args.contact_end)
     except ValueError as exc:
         print(f"zener-sym fit: error: {exc}", file=sys.stderr)
         return 2
@@ -72,7 +81,7 @@ def run(args, out=print) -> int:
     return 0
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("fit", help="fit the dissipative constant A of viscoelastic grains to "
                        "measured (v0, e) pairs from a CSV file")
     p.add_argument("--data", required=True, metavar="FILE.csv",

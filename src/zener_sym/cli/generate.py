@@ -3,12 +3,14 @@ verify that both are fresh."""
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 from .. import codegen
 from ._checkout import CheckoutError, source_root
+from ._types import Subparsers
 
 
-def _formulas(check: bool, root) -> int:
+def _formulas(check: bool, root: Path) -> int:
     """FORMULAS.md (the derived equations, at the checkout root) travels with generated/."""
     from ..derivation import formulas, registry
 
@@ -26,6 +28,8 @@ def _formulas(check: bool, root) -> int:
 
 
 def run(check: bool = False) -> int:
+    """Emit generated/ and FORMULAS.md (or with ``check``, compare them): 0 fresh or
+    written, 1 stale, 2 without a source checkout."""
     try:  # before any work
         root = source_root(f"zener-sym generate{' --check' if check else ''}")
     except CheckoutError as exc:
@@ -48,7 +52,7 @@ def run(check: bool = False) -> int:
     return _formulas(False, root)
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("generate", help="emit numpy/mpmath kernels into generated/ from the derivation")
     p.add_argument("--check", action="store_true",
                    help="regenerate in memory and fail with a unified diff if generated/ is stale")

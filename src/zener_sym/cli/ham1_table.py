@@ -4,16 +4,18 @@ from __future__ import annotations
 
 from ..ham import table_build
 from ._tables import run_table
+from ._types import Subparsers
 
 
 def run(check: bool = False) -> int:
+    """Build (or with ``check``, verify) the ham1 summary's table; the exit code."""
     return run_table(table_build, "zener_sym.generated.ham1_table",
                      (("LAM_CONT", "LAM_CONT"), ("PIECES", "PIECES"), ("COEF", "COEF")),
                      "ham1-table", "the builder, the ham1 series or the generated ham1 kernels",
                      check)
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("ham1-table", help="build the Chebyshev tables of the ham1 summary")
     p.add_argument("--check", action="store_true",
                    help="rebuild in memory and fail if the committed table differs numerically")

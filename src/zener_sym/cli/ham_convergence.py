@@ -3,13 +3,15 @@
 and chart, or check that the committed table and CSV are fresh."""
 from __future__ import annotations
 
+import argparse
 import sys
 
 from ..bench import ham_convergence
 from ._checkout import CheckoutError, check_result, source_root
+from ._types import Subparsers
 
 
-def _run(args) -> int:
+def _run(args: argparse.Namespace) -> int:
     try:  # the table lives in the repository's docs/: say so before the study's work
         root = source_root(f"zener-sym ham-convergence{' --check' if args.check else ''}")
     except CheckoutError as exc:
@@ -25,7 +27,7 @@ def _run(args) -> int:
     return 0
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("ham-convergence", help="convergence study of the HAM series: orders, "
                        "Liao's c0, both formulations, against exact (docs/ham_convergence.md)")
     p.add_argument("--check", action="store_true",

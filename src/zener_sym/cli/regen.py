@@ -4,14 +4,16 @@ from __future__ import annotations
 
 import sys
 import time
+from collections.abc import Sequence
 
 from .. import artefacts
 from ._checkout import CheckoutError, source_root
+from ._types import Out, Subparsers
 
 __all__ = ["add_parser", "run"]
 
 
-def _list(out) -> int:
+def _list(out: Out) -> int:
     for a in artefacts.ARTEFACTS:
         where = ", ".join(a.paths)
         alias = f"; alias: zener-sym {a.alias}" if a.alias else ""
@@ -20,7 +22,8 @@ def _list(out) -> int:
     return 0
 
 
-def run(names=(), check: bool = False, list_only: bool = False, out=print) -> int:
+def run(names: Sequence[str] = (), check: bool = False, list_only: bool = False,
+        out: Out = print) -> int:
     """Rebuild (or with ``check``, verify) the artefacts ``names`` (default: all).
 
     Returns 0 when everything is fresh or was written, 1 when a check found a stale artefact,
@@ -74,7 +77,7 @@ def _took(t0: float, c0: float) -> str:
     return f"{time.perf_counter() - t0:.1f} s, {time.process_time() - c0:.1f} s CPU"
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("regen", help="rebuild, check (--check) or list (--list) the committed "
                        "artefacts: kernels, tables, data and tables in the docs")
     p.add_argument("names", nargs="*", metavar="NAME",

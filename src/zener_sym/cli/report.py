@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from ..report.build import SECTIONS, run
+from ._types import Subparsers
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("report", help="the main job: every part of the project, summarised")
     p.add_argument("--out", default="zener-sym-report",
                    help="folder for the charts and tables (default: zener-sym-report)")

@@ -1,14 +1,22 @@
 """``zener-sym scene``: a sphere, a plate and a speed in SI units -> a table (and a plot)."""
 from __future__ import annotations
 
+import argparse
 import os
 import sys
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING, cast
 
 from ..scene.checks import ZenerWarning
 from ..scene.materials import PRESETS, Material
 from ..scene.units import si_value
+from ._types import Out, Subparsers
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from ..scene.scene import Scene, SceneResult
 
 __all__ = ["add_parser", "run", "plot_force", "scene_from_args", "add_scene_arguments"]
 
@@ -52,10 +60,10 @@ def _plot_path(text: str) -> str:
 
 
 #: Formats ``--plot`` writes (matplotlib's common raster and vector formats).
-PLOT_FORMATS = ("png", "pdf", "svg")
+PLOT_FORMATS: tuple[str, ...] = ("png", "pdf", "svg")
 
 
-def plot_force(result, out: str, n: int = 400) -> str:
+def plot_force(result: SceneResult, out: str, n: int = 400) -> str:
     """Plot F(t) of ``result``'s model against exact into ``out`` (needs matplotlib), with the
     package's chart style (:func:`zener_sym.plot.force_history`)."""
     try:
@@ -69,12 +77,13 @@ def plot_force(result, out: str, n: int = 400) -> str:
         ax = force_history(result.scene, model=result.model, n=n)
         ax.set_title(rf"$\lambda = {result.lam:.4g}$, model {result.model}")
         p = Path(out)
-        save(ax.figure, p.with_suffix(""), (p.suffix.lstrip(".") or "png",))
+        fig = cast("Figure", ax.figure)  # force_history drew on a new figure of its own
+        save(fig, p.with_suffix(""), (p.suffix.lstrip(".") or "png",))
         plt.close(ax.figure)
     return out
 
 
-def scene_from_args(args):
+def scene_from_args(args: argparse.Namespace) -> Scene:
     """The Scene the scene options describe (ValueError naming the option that is wrong)."""
     from ..scene.scene import Scene
 
@@ -97,7 +106,9 @@ def scene_from_args(args):
     )
 
 
-def run(args, out=print) -> int:
+def run(args: argparse.Namespace, out: Out = print) -> int:
+    """``zener-sym scene``: the scene's table (and ``--plot``); 0, or 2 with one line on
+    stderr for bad input."""
     try:
         plot = None if args.plot is None else _plot_path(args.plot)
         scene = scene_from_args(args)
@@ -114,7 +125,7 @@ def run(args, out=print) -> int:
     return 0
 
 
-def add_scene_arguments(p, required: bool = True) -> None:
+def add_scene_arguments(p: argparse.ArgumentParser, required: bool = True) -> None:
     """The options that describe a scene (shared by ``scene`` and ``compare``)."""
     p.add_argument("--sphere", required=required,
                    help=f"sphere material: {', '.join(PRESETS)} or 'E,nu,rho' with units "
@@ -132,7 +143,7 @@ def add_scene_arguments(p, required: bool = True) -> None:
     p.add_argument("--plate-yield", default=None, help="plate yield strength, e.g. 250MPa")
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("scene", help="a sphere hitting a plate, in SI units: cheapest model "
                        "meeting --rtol, dimensional results and validity warnings")
     add_scene_arguments(p)

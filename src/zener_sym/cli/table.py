@@ -4,12 +4,14 @@
 """
 from __future__ import annotations
 
+import argparse
 import sys
 
 from ..scene.lookup import lookup_csv, lookup_table
+from ._types import Subparsers
 
 
-def _run(args) -> int:
+def _run(args: argparse.Namespace) -> int:
     try:
         t = lookup_table(args.quantity, args.lam, contact_end=args.contact_end, model=args.model)
     except ValueError as exc:
@@ -27,7 +29,7 @@ def _run(args) -> int:
     return 0
 
 
-def add_parser(sub) -> None:
+def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("table", help="lookup table of summary quantities over a lambda grid "
                        "(e.g. e and tau_d for DEM codes)")
     p.add_argument("--quantity", default="e,tau_d",

@@ -5,26 +5,62 @@ imported only when one is called (the optional ``[plot]`` extra).
 """
 from __future__ import annotations
 
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any, cast
+
 import numpy as np
 
 from ..api import history, summary
 from ..models import get_model
+from ..typing import FloatArray, RealArrayLike, RealLike
 from . import style as _st
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
+    from ..scene.scene import Scene
 
 __all__ = ["force_history", "restitution", "valid_lams", "DEFAULT_RESTITUTION_MODELS"]
 
 #: Models drawn by :func:`restitution` by default: every system the paper's Fig. 15 compares.
-DEFAULT_RESTITUTION_MODELS = ("exact", "ham0", "ham1", "linear", "raman")
+DEFAULT_RESTITUTION_MODELS: tuple[str, ...] = ("exact", "ham0", "ham1", "linear", "raman")
 
 
-def valid_lams(model: str, lams) -> np.ndarray:
-    """The part of ``lams`` inside ``model``'s validity (below its ``lam_bound``)."""
-    lams = np.asarray(lams, dtype=float)
-    bound = get_model(model).lam_bound
+def valid_lams(model: str, lams: RealArrayLike) -> FloatArray:
+    """The part of ``lams`` inside ``model``'s validity (below its exclusive ``lam_bound``).
+
+    Parameters
+    ----------
+    model : str
+        A model name of ``zener_sym.MODELS``.
+    lams : array_like
+        Values of Zener's lambda (Eq. 11).
+
+    Returns
+    -------
+    numpy.ndarray
+        The float values of ``lams`` below the model's bound, in their order (all of them for
+        a model valid at every lambda).
+
+    Raises
+    ------
+    ValueError
+        ``model`` is not a registered model.
+
+    Examples
+    --------
+    >>> from zener_sym.plot.curves import valid_lams
+    >>> valid_lams("exact", [0.5, 1.0, 3.0])
+    array([0.5, 1. , 3. ])
+    >>> valid_lams("raman", [0.25, 0.5, 1.0])   # e = 1 - c1 lambda reaches 0 near 0.58
+    array([0.25, 0.5 ])
+    """
+    lams = np.asarray(lams, dtype=np.float64)
+    bound: float | None = get_model(model).lam_bound
     return lams if bound is None else lams[lams < bound]
 
 
-def _names(model) -> tuple:
+def _names(model: str | Iterable[str]) -> tuple[str, ...]:
     if isinstance(model, str):
         return (model,)
     names = tuple(model)
@@ -33,19 +69,20 @@ def _names(model) -> tuple:
     return names
 
 
-def _axes(ax, width=_st.COLUMN_WIDTH, height=2.4):
+def _axes(ax: Axes | None, width: float = _st.COLUMN_WIDTH, height: float = 2.4) -> Axes:
     if ax is not None:
         return ax
     plt = _st.pyplot()
     with plt.rc_context(_st.RC):
         # constrained layout keeps the labels and the legend below the axes inside the figure
         # when the caller saves it without bbox_inches="tight"
-        _, ax = plt.subplots(figsize=(width, height), layout="constrained")
-    return ax
+        new: Axes = plt.subplots(figsize=(width, height), layout="constrained")[1]
+    return new
 
 
-def force_history(lam_or_scene, model="exact", ax=None, reference: bool = True, n: int = 400,
-                  legend: bool = True):
+def force_history(lam_or_scene: RealLike | Scene, model: str | Iterable[str] = "exact",
+                  ax: Axes | None = None, reference: bool = True, n: int = 400,
+                  legend: bool = True) -> Axes:
     """Draw the contact force over the contact for one lambda or one scene.
 
     Parameters
@@ -67,6 +104,15 @@ def force_history(lam_or_scene, model="exact", ax=None, reference: bool = True, 
     Returns
     -------
     matplotlib.axes.Axes
+        ``ax`` (or the new axes) with one line per model, labelled by
+        :func:`~zener_sym.plot.style.style_for`.
+
+    Raises
+    ------
+    ValueError
+        ``lam_or_scene`` is neither a scalar nor a Scene, ``model`` is not a name or a
+        sequence of names of ``zener_sym.MODELS``, a model does not give a force history or
+        refuses the lambda, or ``n`` is not an integer >= 2.
 
     Examples
     --------
@@ -79,17 +125,23 @@ def force_history(lam_or_scene, model="exact", ax=None, reference: bool = True, 
     ['exact (Eq. 10)', 'HAM 0th order', 'HAM 1st order', 'Mueller et al. (linear)']
     >>> ax.get_xlabel()
     '$\\\\tau$'
+
+    A scene in SI units gives the time in µs and the force in N:
+
+    >>> ax = force_history(zs.Scene("steel", "glass", radius=1e-3, thickness=2e-3, v0=1.0),
+    ...                    model="ham1", n=50)
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('$t$ (µs)', '$F$ (N)')
     """
     names = _names(model)
     if reference and "exact" not in names:
         names = ("exact",) + names
-    scene = lam_or_scene if hasattr(lam_or_scene, "result") else None
     if isinstance(n, bool) or not isinstance(n, int) or n < 2:
         raise ValueError(f"n must be an integer >= 2, got {n!r}")
     ax = _axes(ax)
     plt = _st.pyplot()
     with plt.rc_context(_st.RC):
-        if scene is None:
+        if not hasattr(lam_or_scene, "result"):  # a number: dimensionless axes
             lam = float(lam_or_scene) if np.ndim(lam_or_scene) == 0 else None
             if lam is None:
                 raise ValueError("force_history takes one lambda (a scalar) or a Scene")
@@ -102,8 +154,13 @@ def force_history(lam_or_scene, model="exact", ax=None, reference: bool = True, 
             ax.set_ylabel(_st.label("force"))
             ax.set_title(rf"$\lambda = {lam:.4g}$")
         else:
+            scene = cast("Scene", lam_or_scene)  # a Scene, or anything answering like one
             exact = scene.result(model="exact", warn=False)
-            t = np.linspace(0.0, 1.1 * exact.contact_duration_s, n)
+            t_d = exact.contact_duration_s
+            if t_d is None:  # the exact model gives every field; a stand-in might not
+                raise ValueError("force_history: the scene's exact result has no contact "
+                                 "duration")
+            t = np.linspace(0.0, 1.1 * t_d, n)
             for name in names:
                 f = exact.history(t, model=name)["force_N"]
                 ax.plot(t * 1e6, f, **_line(name, n))
@@ -117,7 +174,7 @@ def force_history(lam_or_scene, model="exact", ax=None, reference: bool = True, 
     return ax
 
 
-def _line(name, n):
+def _line(name: str, n: int) -> dict[str, Any]:
     """Style keywords for a dense curve: markers thinned to about a dozen along it."""
     kw = _st.style_for(name)
     if kw.get("marker"):
@@ -125,7 +182,9 @@ def _line(name, n):
     return kw
 
 
-def restitution(lams=None, models=DEFAULT_RESTITUTION_MODELS, ax=None, legend: bool = True):
+def restitution(lams: RealArrayLike | None = None,
+                models: str | Iterable[str] = DEFAULT_RESTITUTION_MODELS, ax: Axes | None = None,
+                legend: bool = True) -> Axes:
     """Draw the coefficient of restitution e(lambda) of several models (cf. the paper's Fig. 15).
 
     Each model is drawn only where it is valid (below its ``lam_bound``).
@@ -134,8 +193,8 @@ def restitution(lams=None, models=DEFAULT_RESTITUTION_MODELS, ax=None, legend: b
     ----------
     lams : array_like, optional
         Lambda values (default 241 points on [0, 2.4]).
-    models : sequence of str
-        Model names giving ``e``.
+    models : str or sequence of str
+        Model name(s) giving ``e`` (default :data:`DEFAULT_RESTITUTION_MODELS`).
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new column-width figure if omitted.
     legend : bool
@@ -144,6 +203,13 @@ def restitution(lams=None, models=DEFAULT_RESTITUTION_MODELS, ax=None, legend: b
     Returns
     -------
     matplotlib.axes.Axes
+        ``ax`` (or the new axes) with one line per model that is valid somewhere on ``lams``.
+
+    Raises
+    ------
+    ValueError
+        ``models`` is not a name or a sequence of names of ``zener_sym.MODELS``, or a model
+        refuses a lambda of ``lams`` (a negative one, say).
 
     Examples
     --------

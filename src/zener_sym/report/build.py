@@ -1,7 +1,9 @@
 """``zener-sym report``: the main job. Each part of the project contributes one section."""
 from __future__ import annotations
 
+import os
 import time
+from collections.abc import Callable, Collection
 from pathlib import Path
 
 import numpy as np
@@ -10,6 +12,7 @@ from .format import PAPER_LAMBDAS, fmt, markdown_table, seconds
 
 
 def exact_section(out_dir: Path) -> str:
+    """The exact solution's summary at the paper's lambdas, with its time."""
     from ..api import summary
     from ..models import SUMMARY_FIELDS
 
@@ -26,6 +29,7 @@ def exact_section(out_dir: Path) -> str:
 
 
 def scene_section(out_dir: Path) -> str:
+    """The paper's Table 1 pair as a scene in SI units, the cheapest model meeting 1e-3."""
     import warnings
 
     from ..scene.scene import Scene
@@ -106,11 +110,14 @@ def _audit_section(out_dir: Path) -> str:
 
 
 #: Where report sections write files (charts) unless ``run`` is told otherwise.
-DEFAULT_OUT_DIR = Path("zener-sym-report")
+DEFAULT_OUT_DIR: Path = Path("zener-sym-report")
+
+#: A report section: the folder for its files -> its markdown.
+Section = Callable[[Path], str]
 
 #: (title, callable(out_dir) returning markdown; ``out_dir`` is the folder for its files).
 #: Later parts of the project append their section here.
-SECTIONS = [
+SECTIONS: list[tuple[str, Section]] = [
     ("exact", exact_section),
     ("derivation", derivation_section),
     ("audit", _audit_section),
@@ -121,10 +128,11 @@ SECTIONS = [
 ]
 
 
-def run(out=print, out_dir=None, skip=()) -> int:
+def run(out: Callable[[str], object] = print, out_dir: str | os.PathLike[str] | None = None,
+        skip: Collection[str] = ()) -> int:
     """Print every section; files (charts) go to ``out_dir`` (default :data:`DEFAULT_OUT_DIR`).
-    ``skip``: section names to leave out."""
-    out_dir = DEFAULT_OUT_DIR if out_dir is None else Path(out_dir)
+    ``skip``: section names to leave out. Returns 0, or 1 when a section failed."""
+    folder = DEFAULT_OUT_DIR if out_dir is None else Path(out_dir)
     import datetime
     import platform
 
@@ -137,7 +145,7 @@ def run(out=print, out_dir=None, skip=()) -> int:
         if name in skip:
             continue
         try:
-            out(section(out_dir))
+            out(section(folder))
         except Exception as exc:  # a failing section must not hide the others
             status = 1
             out(f"## {name}: FAILED\n\n{type(exc).__name__}: {exc}")

@@ -6,6 +6,7 @@ sphere and wall the page assumes. ``zener-sym regen calibration`` rebuilds the p
 and draws the same."""
 from __future__ import annotations
 
+import os
 from importlib import resources
 
 from ..scene.calibrate import DissipationFit, fit_dissipation, read_measurements
@@ -13,16 +14,16 @@ from ..scene.materials import Material
 from ..scene.scaling import sphere_mass
 
 #: The committed files, relative to the repository's root.
-TEXT = "docs/data/calibration_bridges1984.txt"
-CHART = "docs/viscoelastic/calibration_bridges1984.png"
-DATA = "bridges1984_ice_law.csv"
+TEXT: str = "docs/data/calibration_bridges1984.txt"
+CHART: str = "docs/viscoelastic/calibration_bridges1984.png"
+DATA: str = "bridges1984_ice_law.csv"
 
 #: What docs/viscoelastic.md assumes: ice (E = 9 GPa, nu = 0.33, 917 kg/m^3), radius 2.5 cm,
 #: on an ice wall; the chart's labels as the page's command gives them.
-ICE = Material(9e9, 0.33, 917.0, name="ice")
-RADIUS = 0.025
-TITLE = "ice: the law of Bridges et al. (1984), fitted"
-DATA_LABEL = "Bridges et al. (1984) law"
+ICE: Material = Material(9e9, 0.33, 917.0, name="ice")
+RADIUS: float = 0.025
+TITLE: str = "ice: the law of Bridges et al. (1984), fitted"
+DATA_LABEL: str = "Bridges et al. (1984) law"
 
 
 def fit() -> DissipationFit:
@@ -38,6 +39,6 @@ def text(result: DissipationFit | None = None) -> str:
     return str(fit() if result is None else result).rstrip("\n") + "\n"
 
 
-def write_chart(path, result: DissipationFit | None = None) -> None:
+def write_chart(path: str | os.PathLike[str], result: DissipationFit | None = None) -> None:
     """Draw the page's chart to ``path`` (needs matplotlib)."""
     (fit() if result is None else result).plot(path, title=TITLE, data_label=DATA_LABEL)

@@ -9,48 +9,69 @@ artefact ``ham-envelopes`` of ``zener-sym regen``.
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
+from typing import Final, TypedDict
 
 import numpy as np
 
+from ..typing import FloatArray, RealArrayLike
 from .format import seconds
 
 __all__ = ["envelopes", "envelope_markdown", "comparison_markdown", "update_doc", "FIELDS",
-           "LAMBDAS"]
+           "LAMBDAS", "Envelopes"]
 
-FIELDS = ("F_m", "tau_d", "e", "impulse", "delta_m")
+FIELDS: tuple[str, ...] = ("F_m", "tau_d", "e", "impulse", "delta_m")
 #: lambda grid of the envelopes: [0, 2.4] in steps of 0.1
-LAMBDAS = np.round(np.linspace(0.0, 2.4, 25), 10)
+LAMBDAS: FloatArray = np.round(np.linspace(0.0, 2.4, 25), 10)
+
+#: The models measured (a Final tuple of literals: the keys of :class:`Envelopes`).
+_MODELS: Final = ("ham0", "ham1")
+
+#: A lambda range (lo, hi), both ends included.
+Range = tuple[float, float]
+#: field -> (largest relative error on a range, the lambda where it occurs)
+RangeEnvelope = dict[str, tuple[float, float]]
 
 
-def _rel(a, b):
+class Envelopes(TypedDict):
+    """What :func:`envelopes` measures: per model, per lambda range, per field the largest
+    relative error and where it occurs; ``_per_lambda`` has every error on the grid."""
+
+    ham0: dict[Range, RangeEnvelope]
+    ham1: dict[Range, RangeEnvelope]
+    _per_lambda: dict[str, dict[str, FloatArray]]
+
+
+def _rel(a: FloatArray, b: FloatArray) -> FloatArray:
     return np.abs(a - b) / np.abs(b)
 
 
-def envelopes(lams=LAMBDAS, ranges=((0.0, 1.0), (0.0, 2.0), (0.0, 2.4)), n_tau=400):
+def envelopes(lams: RealArrayLike = LAMBDAS,
+              ranges: Sequence[Range] = ((0.0, 1.0), (0.0, 2.0), (0.0, 2.4)),
+              n_tau: int = 400) -> Envelopes:
     """Per model and lambda range: the max relative error of each field and of the force history.
 
     Returns
     -------
-    dict
+    Envelopes
         {model: {(lo, hi): {field: (max error, lambda where it occurs)}}}, plus "_per_lambda":
         {model: {field: array of errors}}.
     """
     from ..api import history, summary
 
-    lams = np.asarray(lams, dtype=float)
+    lams = np.asarray(lams, dtype=np.float64)
     ex = summary(lams, model="exact")
-    out = {"_per_lambda": {}}
-    sums = {m: summary(lams, model=m) for m in ("ham0", "ham1")}
+    out: Envelopes = {"_per_lambda": {}, "ham0": {}, "ham1": {}}
+    sums = {m: summary(lams, model=m) for m in _MODELS}
     T = 1.05 * np.maximum(ex.tau_d, np.maximum(sums["ham0"].tau_d, sums["ham1"].tau_d))
     tau = T[:, None] * np.linspace(0.0, 1.0, n_tau)  # one grid per lambda, both contacts
     fe = history(lams[:, None], tau, model="exact").force
-    for model in ("ham0", "ham1"):
+    for model in _MODELS:
         s = sums[model]
         per = {f: _rel(getattr(s, f), getattr(ex, f)) for f in FIELDS}
         fm = history(lams[:, None], tau, model=model).force
         per["force history"] = np.max(np.abs(fm - fe), axis=1) / ex.F_m
         out["_per_lambda"][model] = per
-        out[model] = {}
         for lo, hi in ranges:
             m = (lams >= lo) & (lams <= hi)
             out[model][(lo, hi)] = {f: (float(np.max(v[m])), float(lams[m][np.argmax(v[m])]))
@@ -58,19 +79,20 @@ def envelopes(lams=LAMBDAS, ranges=((0.0, 1.0), (0.0, 2.0), (0.0, 2.4)), n_tau=4
     return out
 
 
-def envelope_markdown(env=None) -> str:
+def envelope_markdown(env: Envelopes | None = None) -> str:
+    """The envelopes as the markdown table of docs/ham.md (measured now unless ``env`` given)."""
     env = envelopes() if env is None else env
     fields = FIELDS + ("force history",)
     lines = ["| model | lambda range | " + " | ".join(fields) + " |",
              "|" + "---|" * (len(fields) + 2)]
-    for model in ("ham0", "ham1"):
+    for model in _MODELS:
         for rng, vals in env[model].items():
             cells = [f"{100 * vals[f][0]:.2f}% (at {vals[f][1]:g})" for f in fields]
             lines.append(f"| {model} | [{rng[0]:g}, {rng[1]:g}] | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
 
-def comparison_markdown(lams=(0.0, 0.11, 1.01, 1.51, 1.99)) -> str:
+def comparison_markdown(lams: RealArrayLike = (0.0, 0.11, 1.01, 1.51, 1.99)) -> str:
     """Relative errors of every model against exact at the paper's lambdas (report section)."""
     from ..api import summary
     from ..models import FieldUnavailableError
@@ -79,7 +101,7 @@ def comparison_markdown(lams=(0.0, 0.11, 1.01, 1.51, 1.99)) -> str:
     lams = np.asarray(lams, dtype=float)
     ex = summary(lams, model="exact")
     fields = ("F_m", "tau_d", "e", "impulse", "delta_m", "xi")
-    rows = []
+    rows: list[list[str]] = []
     for model in ("ham0", "ham1", "hertz", "hunter", "reed", "oneway"):
         for i, lam in enumerate(lams):
             try:

@@ -15,20 +15,22 @@ from __future__ import annotations
 
 import csv
 import io
+from collections.abc import Callable
 from dataclasses import dataclass
 from importlib import resources
 
 import numpy as np
 
 from ..api import summary
+from ..typing import FloatArray
 
-__all__ = ["Peer", "GRID", "TOLS", "peers", "measure", "markdown", "update_doc"]
+__all__ = ["Peer", "PeerRow", "GRID", "TOLS", "peers", "measure", "markdown", "update_doc"]
 
 #: The lambda grid of the comparison (the toolbox run uses the same).
-GRID = np.round(np.arange(1, 251) * 0.02, 10)
+GRID: FloatArray = np.round(np.arange(1, 251) * 0.02, 10)
 #: Below it, for the peers that are formulas: 40 points from 1e-4 to 0.02 (geometric).
-FINE = np.geomspace(1e-4, 0.02, 41)[:-1]
-TOLS = (1e-2, 1e-3, 1e-6)
+FINE: FloatArray = np.geomspace(1e-4, 0.02, 41)[:-1]
+TOLS: tuple[float, ...] = (1e-2, 1e-3, 1e-6)
 
 _C1_LIT, _C2_LIT = 1.15344, 0.79826  # Ramirez et al. 1999 (gamma_1, gamma_2 in x = beta v^(1/5))
 _PADE_NUM = (1.0, 0.501086)  # Mueller & Poeschel 2011, [1/4] Pade in v* = sqrt(x)
@@ -40,22 +42,23 @@ class Peer:
     """A published or shipped way to get e(lambda).
 
     ``criterion``: the end of contact the peer assumes ("delta": xi = 0, "force": force-free).
-    ``e``: callable lambda array -> e array. ``source``: where the formula or values come from.
+    ``e``: callable lambda array -> e array (None: this package's series model, measured by
+    :func:`measure` itself). ``source``: where the formula or values come from.
     """
 
     name: str
     source: str
     criterion: str
-    e: object
+    e: Callable[[FloatArray], FloatArray] | None
     table: bool = False  # values exist on GRID only (the toolbox run)
 
 
-def _pade(lam):
+def _pade(lam: FloatArray) -> FloatArray:
     vs = np.sqrt(1.5 * lam)
     return np.polyval(_PADE_NUM[::-1], vs) / np.polyval(_PADE_DEN[::-1], vs)
 
 
-def _toolbox_rows():
+def _toolbox_rows() -> dict[str, FloatArray]:
     text = (resources.files("zener_sym") / "data" / "peers_toolbox.csv").read_text("utf-8")
     rows = [r for r in csv.reader(io.StringIO(text)) if r and not r[0].startswith("#")]
     head = rows[0]
@@ -63,8 +66,8 @@ def _toolbox_rows():
     return {h: data[:, i] for i, h in enumerate(head)}
 
 
-def _from_table(col):
-    def e(lam):
+def _from_table(col: str) -> Callable[[FloatArray], FloatArray]:
+    def e(lam: FloatArray) -> FloatArray:
         t = _toolbox_rows()
         if not np.array_equal(np.round(t["lam"], 10), np.round(lam, 10)):
             raise ValueError("the toolbox values exist on the grid GRID only")
@@ -77,7 +80,7 @@ _TB = ("Approx-ViscoElastic-CoR (Chatterjee, James & Brogliato 2021, github.com/
        "Approx-ViscoElastic-CoR, commit 9a8f7b6) run with Octave by tools/peers/toolbox_cor.m")
 
 
-def peers() -> list:
+def peers() -> list[Peer]:
     """The peers, literature first, then the toolbox (values from data/peers_toolbox.csv)."""
     return [
         Peer("first order 1 - C1 x", "Ramirez, Poeschel, Brilliantov & Schwager, PRE 60, 4465 (1999): "
@@ -101,7 +104,7 @@ def peers() -> list:
     ]
 
 
-def _holds(err, grid, tol):
+def _holds(err: FloatArray, grid: FloatArray, tol: float) -> tuple[float, bool]:
     """(largest lambda* with every grid point <= lambda* within tol, whether that is the whole grid)."""
     bad = np.nonzero(~(err <= tol))[0]
     if len(bad) == 0:
@@ -109,12 +112,17 @@ def _holds(err, grid, tol):
     return (float(grid[bad[0] - 1]) if bad[0] > 0 else 0.0), False
 
 
-def measure() -> list:
+#: One measured peer: (peer, {tol: (lambda*, whether that is the whole grid)}, largest error,
+#: smallest lambda measured).
+PeerRow = tuple[Peer, dict[float, tuple[float, bool]], float, float]
+
+
+def measure() -> list[PeerRow]:
     """Rows ``(peer, {tol: (lambda*, whole_grid)}, max_err, smallest_lambda)`` against the exact
     model: formulas on FINE + GRID, the toolbox on GRID; the series model where it answers."""
     full = np.concatenate([FINE, GRID])
     ref = {end: np.asarray(summary(full, model="exact", contact_end=end).e) for end in ("delta", "force")}
-    rows = []
+    rows: list[PeerRow] = []
     for p in peers():
         sel = slice(len(FINE), None) if p.table else slice(None)
         grid = full[sel]
@@ -130,14 +138,14 @@ def measure() -> list:
     return rows
 
 
-def _fmt(h, first):
+def _fmt(h: tuple[float, bool], first: float) -> str:
     lam, whole = h
     if lam == 0.0:
         return f"< {first:.2g}"
     return f"{lam:.3g}" + (" (all)" if whole else "")
 
 
-def markdown(rows=None) -> str:
+def markdown(rows: list[PeerRow] | None = None) -> str:
     """The peers table as markdown (deterministic for fixed inputs)."""
     rows = measure() if rows is None else rows
     out = ["| peer | end of contact | holds to 1% for lambda up to | to 0.1% | to 1e-6 | largest error | measured on |",

@@ -35,10 +35,9 @@ Each check returns ``(code, message)`` pairs; ``Scene`` and ``SceneResult`` issu
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import Protocol
 
-if TYPE_CHECKING:  # annotations only: scene.py imports this module
-    from .scene import Scene
+from .materials import Material
 
 __all__ = ["ZenerWarning", "HAM_LAMBDA_BOUND", "ham_k", "ham_lambda_bound", "static_checks",
            "dynamic_checks", "THICK_RATIO", "KH_MAX", "A_OVER_H_MAX", "W_OVER_H_MAX",
@@ -60,6 +59,30 @@ class ZenerWarning(UserWarning):
     >>> any(issubclass(w.category, zs.ZenerWarning) for w in caught)
     True
     """
+
+
+class SceneInputs(Protocol):
+    """What the checks read of a scene (``zener_sym.Scene`` has it; scene.py imports this
+    module, so it is described here rather than imported)."""
+
+    sphere: Material
+    plate: Material
+    radius: float
+    thickness: float
+    v0: float
+    plate_radius: float | None
+
+    @property
+    def lam(self) -> float: ...
+
+    @property
+    def D(self) -> float: ...
+
+    @property
+    def alpha(self) -> float: ...
+
+    @property
+    def m_star(self) -> float: ...
 
 
 THICK_RATIO = 0.2   # 2R/H below which the plate acts as a half-space (Koller & Kolsky 1987)
@@ -92,7 +115,7 @@ def ham_lambda_bound() -> float:
 HAM_LAMBDA_BOUND = ham_lambda_bound()
 
 
-def static_checks(scene: Scene) -> list[tuple[str, str]]:
+def static_checks(scene: SceneInputs) -> list[tuple[str, str]]:
     """Checks that need only the scene's inputs."""
     out = []
     lam = scene.lam
@@ -109,7 +132,7 @@ def static_checks(scene: Scene) -> list[tuple[str, str]]:
     return out
 
 
-def dynamic_checks(scene: Scene, t_d: float, delta_max: float, F_max: float, impulse: float
+def dynamic_checks(scene: SceneInputs, t_d: float, delta_max: float, F_max: float, impulse: float
                    ) -> list[tuple[str, str]]:
     """Checks that need the contact duration [s], maximum compression [m], maximum force [N]
     and final impulse (dimensionless I_bar at the end of contact)."""

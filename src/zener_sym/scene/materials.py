@@ -84,7 +84,7 @@ class Material:
         --------
         >>> import zener_sym as zs
         >>> f"{zs.GLASS.plane_modulus / 1e9:.4g} GPa"
-        '75.34 GPa'
+        '76.37 GPa'
         """
         return self.E / (1.0 - self.nu**2)
 

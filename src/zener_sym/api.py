@@ -146,10 +146,12 @@ class Summary(_Fields):
 
 
 class History(_Fields):
-    """Dimensionless histories on a time grid: tau, delta, velocity (sphere, 1 - I, Eq. 64),
-    force (the model's contact force: delta^{3/2}, Eq. 45, for all but hunter's sine, Eq. 52),
-    impulse (Eq. 47; also the plate deflection w-bar, Eq. 66). From the model's tau_d on, delta
-    and the force are exactly 0 and the impulse keeps its final value.
+    """Dimensionless histories of one impact (or arrays of them) on a time grid.
+
+    The fields: tau, delta, velocity (sphere, 1 - I, Eq. 64), force (the model's contact force:
+    delta^{3/2}, Eq. 45, for all but hunter's sine, Eq. 52), impulse (Eq. 47; also the plate
+    deflection w-bar, Eq. 66). From the model's tau_d on, delta and the force are exactly 0 and
+    the impulse keeps its final value.
 
     Made by :func:`history`; every field has the broadcast shape of lambda and tau.
 

@@ -1,31 +1,30 @@
 """zener-sym: Zener's sphere-plate impact, its homotopy-analysis solution re-derived with SymPy,
 and numeric kernels generated from that derivation.
 
+What ``dir(zener_sym)`` lists is ``__all__``, the documented public names (PEP 562 ``__dir__``);
+the subpackages (``zener_sym.exact``, ``zener_sym.models``, ...) stay importable by their full
+names.
+
     >>> import zener_sym as zs
     >>> s = zs.summary(1.01, model="exact")
     >>> round(s.e, 6)
     0.180735
 """
+from __future__ import annotations
+
+from . import models as _models
 from .api import History, Summary, history, lam_for, summary
-from .models import REGISTRY, FieldUnavailableError
+from .models import FieldUnavailableError
+from .scene.calibrate import DissipationFit, dissipation_for, fit_dissipation, thickness_for
 from .scene.checks import ZenerWarning
+from .scene.compare import Comparison, compare
 from .scene.grains import GrainImpact, grain_impact, viscoelastic_lambda
 from .scene.materials import ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TABLE1_SPHERE, Material
 from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
-from .scene.compare import Comparison, compare
 from .scene.stress_waves import stress_wave_k, stress_wave_loss
-from .scene.calibrate import DissipationFit, dissipation_for, fit_dissipation, thickness_for
 
 __version__ = "0.2.0"
-
-
-def __getattr__(name):
-    # MODELS reflects the registry at the time of asking, so later plug-ins show up.
-    if name == "MODELS":
-        return tuple(REGISTRY)
-    raise AttributeError(f"module 'zener_sym' has no attribute {name!r}")
-
 
 __all__ = ["summary", "history", "lam_for", "Summary", "History", "MODELS", "FieldUnavailableError",
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
@@ -33,3 +32,16 @@ __all__ = ["summary", "history", "lam_for", "Summary", "History", "MODELS", "Fie
            "compare", "Comparison", "__version__",
            "viscoelastic_lambda", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss",
            "dissipation_for", "thickness_for", "fit_dissipation", "DissipationFit"]
+
+
+def __getattr__(name: str) -> tuple[str, ...]:
+    # MODELS reflects the registry at the time of asking, so later plug-ins show up.
+    if name == "MODELS":
+        return tuple(_models.REGISTRY)
+    raise AttributeError(f"module 'zener_sym' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    # What tab completion and dir() show is what is documented (issue 26): the public names,
+    # not the modules imported along the way (api, params, scene, ...).
+    return sorted(__all__)

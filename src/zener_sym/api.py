@@ -1,30 +1,46 @@
 """The uniform API: ``summary`` and ``history`` for every registered model."""
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any, Protocol, TypeVar, cast, overload
+
 import numpy as np
 
 from . import params
 from .exact import inverse as _inverse
 from .exact.force_end import check_contact_end
-from .models import HISTORY_FIELDS, SUMMARY_FIELDS, get_model
+from .models import HISTORY_FIELDS, SUMMARY_FIELDS, Model, get_model
+from .typing import FloatArray, RealArrayLike
 
 __all__ = ["Summary", "History", "summary", "history", "lam_for"]
+
+
+_R_co = TypeVar("_R_co", covariant=True)
+
+
+class SceneLike(Protocol[_R_co]):
+    """What :func:`summary` accepts instead of a lambda: an object that computes its own result
+    (``zener_sym.Scene``; this layer does not import the scene layer above it)."""
+
+    def summary(self, model: str | None = None, **options: Any) -> _R_co: ...
 
 
 class _Fields:
     """Named dimensionless fields; asking for one the model cannot give raises a clear error."""
 
-    _all: tuple = ()
+    _all: tuple[str, ...] = ()
     _kind = ""
 
-    def __init__(self, model, values: dict, scalar: bool, skipped: tuple = ()):
-        self.model = model.name
+    def __init__(self, model: Model, values: dict[str, FloatArray], scalar: bool,
+                 skipped: tuple[str, ...] = ()) -> None:
+        self.model: str = model.name
         self._model = model
         self._values = values
         self._scalar = scalar
         self._skipped = skipped
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> Any:
+        # Any: a field is a float for a scalar lambda and an array otherwise
         if name.startswith("_"):
             raise AttributeError(name)
         if name in self._values:
@@ -41,14 +57,41 @@ class _Fields:
                              f"{', '.join(self._all)}")
 
     @property
-    def fields(self) -> tuple:
-        """The fields this model gave, in table order."""
+    def fields(self) -> tuple[str, ...]:
+        """The fields this model gave, in table order.
+
+        Returns
+        -------
+        tuple of str
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> zs.summary(0.5, model="hertz").fields
+        ('lam', 'delta_m', 'tau_dc', 'tau_d', 'tau_dr', 'eta', 'e', 'F_m', 'impulse', 'int_F2', 'xi')
+        >>> zs.history(0.5, [0.0, 1.0], fields="force").fields
+        ('tau', 'force')
+        """
         return tuple(f for f in self._all if f in self._values)
 
-    def as_dict(self) -> dict:
+    def as_dict(self) -> dict[str, Any]:
+        """The fields as a dict, in table order (floats for a scalar lambda, arrays otherwise).
+
+        Returns
+        -------
+        dict
+            Field name -> value, for every field in :attr:`fields`.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> d = zs.summary(0.5).as_dict()
+        >>> list(d)[:4], round(d["e"], 4)
+        (['lam', 'delta_m', 'tau_dc', 'tau_d'], 0.4369)
+        """
         return {f: getattr(self, f) for f in self.fields}
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         body = ", ".join(f"{f}={getattr(self, f)!r}" if self._scalar else f"{f}=<array>"
                          for f in self.fields)
         return f"{type(self).__name__}(model={self.model!r}, {body})"
@@ -65,6 +108,17 @@ class Summary(_Fields):
 
     Made by :func:`summary`; a field is a float for a scalar lambda and an array of lambda's
     shape otherwise. A field the model cannot give raises ``FieldUnavailableError``.
+
+    Parameters
+    ----------
+    model : zener_sym.models.Model
+        The registered model that computed the values.
+    values : dict of str to numpy.ndarray
+        Field name -> array of lambda's shape.
+    scalar : bool
+        True for a scalar lambda: the fields are then floats.
+    skipped : tuple of str
+        Not used by summaries (see :class:`History`).
 
     Attributes
     ----------
@@ -92,12 +146,25 @@ class Summary(_Fields):
 
 
 class History(_Fields):
-    """Dimensionless histories on a time grid: tau, delta, velocity (sphere, 1 - I, Eq. 64),
-    force (the model's contact force: delta^{3/2}, Eq. 45, for all but hunter's sine, Eq. 52),
-    impulse (Eq. 47; also the plate deflection w-bar, Eq. 66). From the model's tau_d on, delta
-    and the force are exactly 0 and the impulse keeps its final value.
+    """Dimensionless histories of one impact (or arrays of them) on a time grid.
+
+    The fields: tau, delta, velocity (sphere, 1 - I, Eq. 64), force (the model's contact force:
+    delta^{3/2}, Eq. 45, for all but hunter's sine, Eq. 52), impulse (Eq. 47; also the plate
+    deflection w-bar, Eq. 66). From the model's tau_d on, delta and the force are exactly 0 and
+    the impulse keeps its final value.
 
     Made by :func:`history`; every field has the broadcast shape of lambda and tau.
+
+    Parameters
+    ----------
+    model : zener_sym.models.Model
+        The registered model that computed the values.
+    values : dict of str to numpy.ndarray
+        Field name -> array of the broadcast shape, ``tau`` included.
+    scalar : bool
+        False: history fields stay arrays (0-d for scalar lambda and tau).
+    skipped : tuple of str
+        History fields the caller left out of ``fields=``; asking for one says how to get it.
 
     Attributes
     ----------
@@ -120,12 +187,25 @@ class History(_Fields):
     _kind = "history"
 
     @property
-    def deflection(self):
-        """Plate deflection w-bar at the centre, equal to the impulse (Eq. 66)."""
-        return self.impulse
+    def deflection(self) -> FloatArray:
+        """Plate deflection w-bar at the centre, equal to the impulse (Eq. 66).
+
+        Returns
+        -------
+        numpy.ndarray
+            w-bar at each time, of the broadcast shape of lambda and tau.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> h = zs.history(1.0, [0.0, 10.0])
+        >>> [round(float(w), 4) for w in h.deflection]     # 0, then I(tau_d) = 1 + e
+        [0.0, 1.1841]
+        """
+        return cast(FloatArray, self.impulse)
 
 
-def _validated(model_name, lam):
+def _validated(model_name: str, lam: RealArrayLike) -> tuple[Model, FloatArray]:
     model = get_model(model_name)
     arr = params.as_lambda(lam)
     if model.lam_bound is not None:
@@ -133,7 +213,16 @@ def _validated(model_name, lam):
     return model, arr
 
 
-def summary(lam, model: str | None = None, **options):
+@overload
+def summary(lam: RealArrayLike, model: str | None = None, **options: Any) -> Summary: ...
+
+
+@overload
+def summary(lam: SceneLike[_R_co], model: str | None = None, **options: Any) -> _R_co: ...
+
+
+def summary(lam: RealArrayLike | SceneLike[Any], model: str | None = None,
+            **options: Any) -> Any:
     """Summary quantities of the impact for inelasticity parameter(s) ``lam``, or for a scene.
 
     Parameters
@@ -151,6 +240,8 @@ def summary(lam, model: str | None = None, **options):
     Returns
     -------
     Summary or SceneResult
+        The dimensionless :class:`Summary` for a lambda; the scene's ``SceneResult`` for a
+        ``Scene``.
 
     Raises
     ------
@@ -168,20 +259,21 @@ def summary(lam, model: str | None = None, **options):
     """
     if callable(getattr(lam, "summary", None)):
         # A Scene answers for itself (this layer does not import the scene layer above it).
-        return lam.summary(model=model, **options)
+        return cast("SceneLike[Any]", lam).summary(model=model, **options)
     if model is None:
         model = "exact"
-    m, arr = _validated(model, lam)
+    m, arr = _validated(model, cast(RealArrayLike, lam))
     m.check_options(options)
     flat = arr.reshape(-1)
-    values = m._summary(flat, **options)
-    values = {k: np.asarray(v, dtype=float).reshape(arr.shape) for k, v in values.items()}
+    raw = m._summary(flat, **options)
+    values = {k: np.asarray(v, dtype=float).reshape(arr.shape) for k, v in raw.items()}
     values["lam"] = arr.copy()
     _no_silent_nan(values, m)
     return Summary(m, values, scalar=arr.ndim == 0)
 
 
-def history(lam, tau, model: str = "exact", fields=None, **options) -> History:
+def history(lam: RealArrayLike, tau: RealArrayLike, model: str = "exact",
+            fields: str | Sequence[str] | None = None, **options: Any) -> History:
     """Histories delta, velocity, force and impulse at times ``tau`` for ``lam``.
 
     Parameters
@@ -240,17 +332,18 @@ def history(lam, tau, model: str = "exact", fields=None, **options) -> History:
     # is read-only while the model runs, so a model cannot change it
     tau_c = np.ascontiguousarray(tau_b) if tau_b.shape != t.shape else t
     tau_c.flags.writeable = False
-    values = m.history_values(lam_b, tau_c, want, **options)
+    raw = m.history_values(lam_b, tau_c, want, **options)
     tau_c.flags.writeable = True
     # every field has the broadcast shape, () for scalar lambda and tau
-    values = {k: np.asarray(v, dtype=float).reshape(tau_b.shape) for k, v in values.items()}
+    values = {k: np.asarray(v, dtype=float).reshape(tau_b.shape) for k, v in raw.items()}
     values["tau"] = tau_c.reshape(tau_b.shape)
     _no_silent_nan(values, m)
     skipped = tuple(f for f in m.history_fields if f not in want)
     return History(m, values, scalar=False, skipped=skipped)
 
 
-def lam_for(e=None, xi=None, tau_d=None, contact_end: str = "delta"):
+def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
+            tau_d: RealArrayLike | None = None, contact_end: str = "delta") -> float | FloatArray:
     """The lambda (Eq. 11) whose exact solution has a given restitution, energy loss or contact
     duration: the inverse of :func:`summary`.
 
@@ -294,18 +387,18 @@ def lam_for(e=None, xi=None, tau_d=None, contact_end: str = "delta"):
     end = check_contact_end(contact_end)
     given = [v for v in (e, xi, tau_d) if v is not None]
     scalar = len(given) == 1 and np.ndim(given[0]) == 0
-    lam = _inverse.lam_for(e=e, xi=xi, tau_d=tau_d, contact_end=end)
+    lam = np.asarray(_inverse.lam_for(e=e, xi=xi, tau_d=tau_d, contact_end=end), dtype=float)
     return float(lam) if scalar else lam
 
 
-def _history_fields(model, fields) -> tuple:
+def _history_fields(model: Model, fields: object) -> tuple[str, ...]:
     """The history fields asked for, checked against what the model gives."""
     if fields is None:
         return tuple(model.history_fields)
     if isinstance(fields, str):
         fields = (fields,)
     try:
-        fields = tuple(fields)
+        fields = tuple(cast("Sequence[str]", fields))  # any iterable; else ValueError below
     except TypeError:
         raise ValueError(f"fields must be a field name or a sequence of them, got {fields!r}; "
                          f"allowed: {', '.join(HISTORY_FIELDS)}") from None
@@ -319,7 +412,7 @@ def _history_fields(model, fields) -> tuple:
     return tuple(f for f in model.history_fields if f in fields)
 
 
-def _no_silent_nan(values: dict, model) -> None:
+def _no_silent_nan(values: dict[str, FloatArray], model: Model) -> None:
     for k, v in values.items():
         if not np.all(np.isfinite(v)):
             raise FloatingPointError(

@@ -9,16 +9,18 @@ import numbers
 
 import numpy as np
 
+from .typing import FloatArray, RealArrayLike
+
 __all__ = ["as_lambda", "as_tau", "check_lambda_bound", "bound_text"]
 
 
-def _as_float_array(value, name: str) -> np.ndarray:
+def _as_float_array(value: object, name: str) -> FloatArray:
     if isinstance(value, (str, bytes)) or value is None:
         raise ValueError(f"{name} must be a real number or an array of real numbers, got {value!r}")
     if isinstance(value, numbers.Complex) and not isinstance(value, numbers.Real):
         raise ValueError(f"{name} must be real, got the complex value {value!r}")
     try:
-        arr = np.asarray(value)
+        arr = np.asarray(value)  # object: whatever the user passed, checked here
     except Exception as exc:  # ragged lists and the like
         raise ValueError(f"{name} must be a real number or an array of real numbers: {exc}") from None
     if arr.dtype == object or arr.dtype.kind not in "biuf":
@@ -31,7 +33,8 @@ def _as_float_array(value, name: str) -> np.ndarray:
     return arr.astype(float)
 
 
-def as_lambda(lam, *, upper: float | None = None, model: str | None = None) -> np.ndarray:
+def as_lambda(lam: RealArrayLike, *, upper: float | None = None,
+              model: str | None = None) -> FloatArray:
     """Validate Zener's inelasticity parameter lambda (Eq. 11) and return it as a float array.
 
     Parameters
@@ -79,7 +82,7 @@ def bound_text(upper: float) -> str:
     return f"0 <= lambda < {upper!r}"
 
 
-def check_lambda_bound(arr: np.ndarray, upper: float, model: str, reason: str = "") -> None:
+def check_lambda_bound(arr: FloatArray, upper: float, model: str, reason: str = "") -> None:
     """Raise ValueError if any lambda reaches ``upper`` (an exclusive bound of ``model``)."""
     if (arr >= upper).any():
         extra = f" ({reason})" if reason else ""
@@ -89,7 +92,7 @@ def check_lambda_bound(arr: np.ndarray, upper: float, model: str, reason: str = 
         )
 
 
-def as_tau(tau) -> np.ndarray:
+def as_tau(tau: RealArrayLike) -> FloatArray:
     """Validate dimensionless time(s) tau = t / T (Eq. 9); must be finite and >= 0."""
     arr = _as_float_array(tau, "tau")
     bad = ~np.isfinite(arr)

@@ -22,6 +22,9 @@ import numpy.typing as npt
 __all__ = ["RealLike", "RealArrayLike", "FloatArray"]
 
 RealLike = Union[int, float, np.integer, np.floating]
-RealArrayLike = Union[RealLike, Sequence[RealLike], Sequence[Sequence[RealLike]],
+# Python numbers and numpy scalars in separate Sequence members: a Sequence of their union is
+# not an ``npt.ArrayLike`` for numpy's stubs (np.ndim, np.asarray would refuse it).
+RealArrayLike = Union[RealLike, Sequence[float], Sequence[Sequence[float]],
+                      Sequence[Union[np.integer, np.floating]],
                       npt.NDArray[np.integer], npt.NDArray[np.floating]]
 FloatArray = npt.NDArray[np.float64]

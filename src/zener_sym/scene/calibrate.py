@@ -23,8 +23,10 @@ from __future__ import annotations
 import csv
 import io
 import math
+import os
 import re
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, overload
 
 import numpy as np
 
@@ -32,9 +34,14 @@ from ..api import lam_for, summary
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
 from ..exact.table import summary_derivative
+from ..typing import FloatArray, RealArrayLike, RealLike
 from .grains import GrainContact, _pos_array, grain_contact
+from .materials import Material
 from .scene import Scene
 from .units import UNITS
+
+if TYPE_CHECKING:  # annotations only: matplotlib is optional (the plot extra)
+    from matplotlib.figure import Figure
 
 __all__ = ["dissipation_for", "thickness_for", "fit_dissipation", "DissipationFit",
            "read_measurements", "Measurements"]
@@ -43,12 +50,13 @@ __all__ = ["dissipation_for", "thickness_for", "fit_dissipation", "DissipationFi
 CONFIDENCE = 0.95
 
 
-def _rate(contact: GrainContact, v0) -> np.ndarray:
+def _rate(contact: GrainContact, v0: RealArrayLike) -> FloatArray:
     """c(v0) = lambda / A = (rho/m_eff)^{2/5} v0^{1/5} [1/s]."""
-    return (contact.rho / contact.m_eff) ** 0.4 * np.asarray(v0, dtype=float) ** 0.2
+    rate: FloatArray = (contact.rho / contact.m_eff) ** 0.4 * np.asarray(v0, dtype=float) ** 0.2
+    return rate
 
 
-def _e_array(e, name="e") -> np.ndarray:
+def _e_array(e: object, name: str = "e") -> FloatArray:
     arr = np.asarray(e, dtype=float) if not isinstance(e, (bool, str)) else None
     if arr is None or arr.dtype.kind not in "fiu":
         raise ValueError(f"{name} (coefficient of restitution) must be a number in (0, 1], got "
@@ -60,8 +68,26 @@ def _e_array(e, name="e") -> np.ndarray:
     return arr
 
 
-def dissipation_for(e, v0, R1, m1, material1, *, R2=None, m2=None, material2=None, wall=None,
-                    contact_end="force"):
+@overload
+def dissipation_for(e: RealLike, v0: RealLike, R1: float | str, m1: float,
+                    material1: Material | str, *, R2: float | str | None = None,
+                    m2: float | None = None, material2: Material | str | None = None,
+                    wall: Material | str | None = None, contact_end: str = "force") -> float: ...
+
+
+@overload
+def dissipation_for(e: RealArrayLike, v0: RealArrayLike, R1: float | str, m1: float,
+                    material1: Material | str, *, R2: float | str | None = None,
+                    m2: float | None = None, material2: Material | str | None = None,
+                    wall: Material | str | None = None,
+                    contact_end: str = "force") -> float | FloatArray: ...
+
+
+def dissipation_for(e: RealArrayLike, v0: RealArrayLike, R1: float | str, m1: float,
+                    material1: Material | str, *, R2: float | str | None = None,
+                    m2: float | None = None, material2: Material | str | None = None,
+                    wall: Material | str | None = None,
+                    contact_end: str = "force") -> float | FloatArray:
     """The dissipative constant A [s] that gives the coefficient of restitution ``e`` at the
     normal impact speed ``v0``: A = lambda(e) / ((rho/m_eff)^{2/5} v0^{1/5}).
 
@@ -100,11 +126,11 @@ def dissipation_for(e, v0, R1, m1, material1, *, R2=None, m2=None, material2=Non
     v_ = _pos_array(v0, "v0", "m/s", "impact speed")
     contact = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
     e_b, v_b = np.broadcast_arrays(e_, v_)
-    A = np.asarray(lam_for(e=e_b, contact_end=ce), dtype=float) / _rate(contact, v_b)
+    A: FloatArray = np.asarray(lam_for(e=e_b, contact_end=ce), dtype=float) / _rate(contact, v_b)
     return float(A) if A.ndim == 0 else A
 
 
-def thickness_for(scene: Scene, e) -> float:
+def thickness_for(scene: Scene, e: RealLike) -> float:
     """The plate thickness [m] at which ``scene`` (all else kept) has the coefficient of
     restitution ``e`` on Zener's plate (end of contact at delta = 0).
 
@@ -152,11 +178,11 @@ class Measurements:
     """Pairs (v0_i, e_i) read by :func:`read_measurements`: speeds in m/s, e, optional sigma_e,
     and the unit the file gave the speeds in."""
 
-    v0: np.ndarray
-    e: np.ndarray
-    sigma: np.ndarray | None
+    v0: FloatArray
+    e: FloatArray
+    sigma: FloatArray | None
     unit: str
-    comments: list = field(default_factory=list)
+    comments: list[str] = field(default_factory=list)
 
 
 #: Header of the speed column: "v0" or "v", then the unit as "_m_s", " [m/s]" or " (m/s)".
@@ -181,7 +207,7 @@ def _speed_unit(header: str) -> str | None:
     return unit
 
 
-def read_measurements(source) -> Measurements:
+def read_measurements(source: str | os.PathLike[str]) -> Measurements:
     """Measured pairs from a CSV file (path) or text: a header naming the speed column with its
     unit (``v0_m_s``, ``v0 [cm/s]``, ``v0 (mm/s)``; units m/s, cm/s, mm/s, km/h), the column
     ``e``, and optionally one uncertainty column of e (``sigma_e``, ``e_err``, ``de``). Lines
@@ -228,7 +254,7 @@ def read_measurements(source) -> Measurements:
     if ie is None:
         raise ValueError(f"{where}: no column 'e' (got "
                          f"{', '.join(repr(h.strip()) for h in header)})")
-    cols = {k: [] for k in ("v", "e", "s")}
+    cols: dict[str, list[float]] = {k: [] for k in ("v", "e", "s")}
     for n, row in enumerate(rows[1:], start=2):
         for key, idx in (("v", iv), ("e", ie), ("s", isg)):
             if idx is None:
@@ -241,6 +267,7 @@ def read_measurements(source) -> Measurements:
                                  f"{cell!r} is not a number") from None
     if not cols["v"]:
         raise ValueError(f"{where}: a header but no data rows")
+    assert unit is not None  # set with the speed column, found above
     factor = UNITS["speed"][unit]
     return Measurements(v0=np.array(cols["v"]) * factor, e=np.array(cols["e"]),
                         sigma=np.array(cols["s"]) if isg is not None else None, unit=unit,
@@ -279,6 +306,12 @@ class DissipationFit:
         Model evaluations of the least-squares solver.
     sigma_from : str
         ``"given"`` or ``"residuals"``: where the error scale came from.
+    se_lnA : float
+        Standard error of ln A.
+    quantile : float
+        The quantile q of the interval (Student's t or normal).
+    confidence : float
+        The interval's confidence level, 0.95.
 
     Examples
     --------
@@ -294,13 +327,13 @@ class DissipationFit:
 
     A: float
     A_se: float
-    A_ci: tuple
-    v0: np.ndarray
-    e: np.ndarray
-    sigma: np.ndarray | None
-    lam: np.ndarray
-    e_fit: np.ndarray
-    residuals: np.ndarray
+    A_ci: tuple[float, float]
+    v0: FloatArray
+    e: FloatArray
+    sigma: FloatArray | None
+    lam: FloatArray
+    e_fit: FloatArray
+    residuals: FloatArray
     s: float
     contact_end: str
     contact: GrainContact
@@ -311,7 +344,7 @@ class DissipationFit:
     quantile: float = field(repr=False)
     confidence: float = CONFIDENCE
 
-    def predict(self, v0) -> dict:
+    def predict(self, v0: RealArrayLike) -> dict[str, float | FloatArray]:
         """e and the contact time at other speeds, with the e interval that A's interval gives.
 
         Parameters
@@ -330,6 +363,17 @@ class DissipationFit:
         ------
         ValueError
             For a non-positive speed, or one at which lambda would exceed 1000.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
+        ...                          wall="steel")
+        >>> p = fit.predict(5.0)
+        >>> round(p["e"], 4), round(p["e_low"], 4), round(p["e_high"], 4)
+        (0.7356, 0.728, 0.743)
+        >>> round(p["lam"] / float(fit.lam[0]), 6), round((5.0 / 0.5) ** 0.2, 6)  # lambda ~ v0^(1/5)
+        (1.584893, 1.584893)
         """
         v = _pos_array(v0, "v0", "m/s", "impact speed")
         c = _rate(self.contact, v)
@@ -343,14 +387,29 @@ class DissipationFit:
         lo = summary(lam_hi, model="exact", contact_end=self.contact_end).e
         hi = summary(self.A_ci[0] * c, model="exact", contact_end=self.contact_end).e
         T = (self.contact.m_eff / self.contact.rho) ** 0.4 * v ** -0.2
-        out = {"v0": v, "lam": lam, "e": s.e, "e_low": lo, "e_high": hi,
-               "contact_duration_s": T * np.asarray(s.tau_d)}
+        out: dict[str, float | FloatArray] = {
+            "v0": v, "lam": lam, "e": s.e, "e_low": lo, "e_high": hi,
+            "contact_duration_s": T * np.asarray(s.tau_d)}
         if np.ndim(v) == 0:
             out = {k: float(x) for k, x in out.items()}
         return out
 
     def summary(self) -> str:
-        """The fit as text a person reads."""
+        """The fit as text a person reads: A, its interval, the scatter, the grains and a table
+        of the points.
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
+        ...                          wall="steel")
+        >>> print(fit.summary().splitlines()[0])
+        dissipative constant A = 2.40221e-07 s  (standard error 1.98e-09 s, 0.82%)
+        """
         n = self.v0.size
         lines = [
             f"dissipative constant A = {self.A:.6g} s  (standard error {self.A_se:.3g} s, "
@@ -376,7 +435,8 @@ class DissipationFit:
     def __str__(self) -> str:
         return self.summary()
 
-    def plot(self, path=None, *, title=None, data_label="measured"):
+    def plot(self, path: str | os.PathLike[str] | None = None, *, title: str | None = None,
+             data_label: str = "measured") -> Figure:
         """Chart: the data (with error bars when sigma was given), the fitted e(v0) and the band
         of A's interval; below, the residuals. Needs matplotlib (the ``plot`` extra).
 
@@ -385,19 +445,32 @@ class DissipationFit:
         path : str or Path, optional
             Where to save (its suffix picks the format); the figure is returned either way.
         title : str, optional
+            The chart's title.
         data_label : str
             Legend entry of the points (default ``"measured"``).
 
         Returns
         -------
         matplotlib.figure.Figure
+
+        Examples
+        --------
+        >>> import matplotlib
+        >>> matplotlib.use("Agg")
+        >>> import zener_sym as zs
+        >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
+        ...                          wall="steel")
+        >>> fig = fit.plot()
+        >>> len(fig.axes)                    # e(v0) above, the residuals below
+        2
         """
         from ..plot.calibration import fit_chart
 
-        return fit_chart(self, path=path, title=title, data_label=data_label)
+        fig: Figure = fit_chart(self, path=path, title=title, data_label=data_label)
+        return fig
 
 
-def _trend(v0, e, w) -> float:
+def _trend(v0: FloatArray, e: FloatArray, w: FloatArray) -> float:
     """Weighted least-squares slope of e against ln v0."""
     x = np.log(v0)
     xm = np.sum(w * x) / np.sum(w)
@@ -405,8 +478,11 @@ def _trend(v0, e, w) -> float:
     return float(np.sum(w * (x - xm) * (e - em)) / np.sum(w * (x - xm) ** 2))
 
 
-def fit_dissipation(v0, e, R1, m1, material1, *, sigma=None, R2=None, m2=None, material2=None,
-                    wall=None, contact_end="force") -> DissipationFit:
+def fit_dissipation(v0: RealArrayLike, e: RealArrayLike, R1: float | str, m1: float,
+                    material1: Material | str, *, sigma: RealArrayLike | None = None,
+                    R2: float | str | None = None, m2: float | None = None,
+                    material2: Material | str | None = None, wall: Material | str | None = None,
+                    contact_end: str = "force") -> DissipationFit:
     """Fit the dissipative constant A [s] to measured pairs (v0_i, e_i) by least squares.
 
     Minimises sum_i ((e_i - e(lambda_i)) / sigma_i)^2 over A, lambda_i = A (rho/m_eff)^{2/5}
@@ -496,14 +572,16 @@ def fit_dissipation(v0, e, R1, m1, material1, *, sigma=None, R2=None, m2=None, m
     p0 = math.log(float(np.median(a0[a0 > 0]))) if np.any(a0 > 0) else p_max - 10.0
     p0 = min(p0, p_max - 1e-9)
 
-    def lams(p):  # at the bound exp(ln(1000/c)) c may round 1 ulp above 1000
+    def lams(p: FloatArray | list[float]) -> FloatArray:
+        # at the bound exp(ln(1000/c)) c may round 1 ulp above 1000
         return np.minimum(math.exp(p[0]) * c, LAMBDA_MAX)
 
-    def residuals(p):
+    def residuals(p: FloatArray) -> FloatArray:
         lam = lams(p)
-        return (e_ - np.asarray(summary(lam, model="exact", contact_end=ce).e)) * inv_s
+        r: FloatArray = (e_ - np.asarray(summary(lam, model="exact", contact_end=ce).e)) * inv_s
+        return r
 
-    def jacobian(p):
+    def jacobian(p: FloatArray | list[float]) -> FloatArray:
         lam = lams(p)
         de = summary_derivative(lam, field="e", contact_end=ce)
         return (-de * lam * inv_s)[:, None]

@@ -35,6 +35,9 @@ Each check returns ``(code, message)`` pairs; ``Scene`` and ``SceneResult`` issu
 from __future__ import annotations
 
 import math
+from typing import Protocol
+
+from .materials import Material
 
 __all__ = ["ZenerWarning", "HAM_LAMBDA_BOUND", "ham_k", "ham_lambda_bound", "static_checks",
            "dynamic_checks", "THICK_RATIO", "KH_MAX", "A_OVER_H_MAX", "W_OVER_H_MAX",
@@ -58,6 +61,30 @@ class ZenerWarning(UserWarning):
     """
 
 
+class SceneInputs(Protocol):
+    """What the checks read of a scene (``zener_sym.Scene`` has it; scene.py imports this
+    module, so it is described here rather than imported)."""
+
+    sphere: Material
+    plate: Material
+    radius: float
+    thickness: float
+    v0: float
+    plate_radius: float | None
+
+    @property
+    def lam(self) -> float: ...
+
+    @property
+    def D(self) -> float: ...
+
+    @property
+    def alpha(self) -> float: ...
+
+    @property
+    def m_star(self) -> float: ...
+
+
 THICK_RATIO = 0.2   # 2R/H below which the plate acts as a half-space (Koller & Kolsky 1987)
 KH_MAX = 1.0        # flexural k H above which Kirchhoff theory is doubtful (our threshold)
 A_OVER_H_MAX = 1.0  # contact radius over thickness (our threshold)
@@ -69,13 +96,16 @@ _C0 = 1.25 ** -0.6  # (5/4)^{-3/5}: makes k = (5/4)^{1/5} = sqrt(delta_m) at lam
 
 def ham_k(lam: float) -> float:
     """k = (lambda + (5/4)^{-3/5})^{-1/3} (paper Eq. 25, exponent derived)."""
-    return (lam + _C0) ** (-1.0 / 3.0)
+    return float((lam + _C0) ** (-1.0 / 3.0))
 
 
 def ham_lambda_bound() -> float:
     """The lambda at which lambda = 2/sqrt(k(lambda)): root of lambda^6 = 64 (lambda + c0)."""
     lo, hi = 1.0, 4.0  # f(lo) < 0 < f(hi); f is increasing on [1, 4]
-    f = lambda x: x**6 - 64.0 * (x + _C0)  # noqa: E731
+
+    def f(x: float) -> float:
+        return x**6 - 64.0 * (x + _C0)
+
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         lo, hi = (mid, hi) if f(mid) < 0 else (lo, mid)
@@ -85,7 +115,7 @@ def ham_lambda_bound() -> float:
 HAM_LAMBDA_BOUND = ham_lambda_bound()
 
 
-def static_checks(scene) -> list[tuple[str, str]]:
+def static_checks(scene: SceneInputs) -> list[tuple[str, str]]:
     """Checks that need only the scene's inputs."""
     out = []
     lam = scene.lam
@@ -102,7 +132,7 @@ def static_checks(scene) -> list[tuple[str, str]]:
     return out
 
 
-def dynamic_checks(scene, t_d: float, delta_max: float, F_max: float, impulse: float
+def dynamic_checks(scene: SceneInputs, t_d: float, delta_max: float, F_max: float, impulse: float
                    ) -> list[tuple[str, str]]:
     """Checks that need the contact duration [s], maximum compression [m], maximum force [N]
     and final impulse (dimensionless I_bar at the end of contact)."""

@@ -4,7 +4,17 @@ from __future__ import annotations
 import csv
 import math
 import numbers
+import os
+from collections.abc import Iterator, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, cast
+
+import numpy as np
+
+from ..typing import RealLike
+
+if TYPE_CHECKING:  # for annotations only: scene.py's Scene imports this module's users
+    from .scene import Scene
 
 __all__ = ["compare", "Comparison", "ComparisonRow"]
 
@@ -22,25 +32,36 @@ class ComparisonRow:
         no value or the exact value is 0 and the model's is not).
     """
 
-    def __init__(self, model: str, values: dict, errors: dict):
+    def __init__(self, model: str, values: dict[str, float], errors: dict[str, float]) -> None:
         self.model = model
         self.values = values
         self.errors = errors
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> float:
         values = self.__dict__.get("values", {})
         if name in values:
-            return values[name]
+            return float(values[name])
         raise AttributeError(f"model {self.__dict__.get('model')!r} gives no {name!r} here; "
                              f"it gives: {', '.join(values) or 'nothing'}")
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         body = ", ".join(f"{k}={v:.6g}" for k, v in self.values.items())
         return f"ComparisonRow(model={self.model!r}, {body})"
 
 
 class Comparison:
     """Models side by side for one impact (see :func:`compare`). Iterating yields the rows.
+
+    Parameters
+    ----------
+    lam : float
+        Zener's lambda of the impact.
+    quantities : tuple of str
+        The quantities compared, in column order.
+    rows : list of ComparisonRow
+        One per model, the exact model first.
+    units : dict of str to str
+        Unit of each SI quantity, for the column headers (empty for a lambda).
 
     Attributes
     ----------
@@ -59,16 +80,17 @@ class Comparison:
     | model | tau_d |
     """
 
-    def __init__(self, lam: float, quantities: tuple, rows: list, units: dict):
+    def __init__(self, lam: float, quantities: tuple[str, ...], rows: list[ComparisonRow],
+                 units: dict[str, str]) -> None:
         self.lam = lam
         self.quantities = quantities
         self.rows = rows
         self._units = units
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[ComparisonRow]:
         return iter(self.rows)
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.rows)
 
     def __getitem__(self, model: str) -> ComparisonRow:
@@ -77,13 +99,31 @@ class Comparison:
                 return r
         raise KeyError(f"no row for model {model!r}; rows: {', '.join(r.model for r in self.rows)}")
 
-    def _header(self, q):
+    def _header(self, q: str) -> str:
         unit = self._units.get(q)
         return f"{q} [{unit}]" if unit else q
 
     def to_markdown(self) -> str:
         """A markdown table: one row per model, each cell ``value (relative error)``; a
-        quantity the model cannot give is shown as a dash."""
+        quantity the model cannot give is shown as a dash.
+
+        Returns
+        -------
+        str
+            A line naming lambda, a blank line, then the table.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> c = zs.compare(0.5, models=["hertz"], quantities=["tau_d", "e"])
+        >>> print(c.to_markdown())
+        lambda = 0.5; relative error against exact in parentheses
+        <BLANKLINE>
+        | model | tau_d | e |
+        |---|---|---|
+        | exact | 3.62444 | 0.436895 |
+        | hertz | 3.21807 (0.11) | 1 (1.3) |
+        """
         head = ["model"] + [self._header(q) for q in self.quantities]
         lines = [f"lambda = {self.lam:.6g}; relative error against exact in parentheses", "",
                  "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
@@ -99,20 +139,60 @@ class Comparison:
             lines.append("| " + " | ".join(cells) + " |")
         return "\n".join(lines)
 
-    def records(self) -> list:
+    def records(self) -> list[dict[str, Any]]:
         """One dict per model: ``model``, each quantity and ``<quantity>_rel_error`` (None where
-        absent)."""
+        absent).
+
+        Returns
+        -------
+        list of dict
+            In row order (the exact model first).
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> c = zs.compare(0.5, models=["hertz"], quantities=["tau_d", "e"])
+        >>> rec = c.records()[1]
+        >>> rec["model"], round(rec["tau_d"], 4), round(rec["tau_d_rel_error"], 4)
+        ('hertz', 3.2181, 0.1121)
+        """
         out = []
         for r in self.rows:
-            rec = {"model": r.model}
+            rec: dict[str, Any] = {"model": r.model}
             for q in self.quantities:
                 rec[q] = r.values.get(q)
                 rec[f"{q}_rel_error"] = r.errors.get(q)
             out.append(rec)
         return out
 
-    def to_csv(self, path) -> Path:
-        """Write :meth:`records` as CSV (absent values are empty cells); returns the path."""
+    def to_csv(self, path: str | os.PathLike[str]) -> Path:
+        """Write :meth:`records` as CSV (absent values are empty cells, floats with 17
+        significant digits).
+
+        Parameters
+        ----------
+        path : str or path-like
+            The file to write (replaced if it exists).
+
+        Returns
+        -------
+        pathlib.Path
+            ``path``.
+
+        Raises
+        ------
+        ValueError
+            When the file cannot be written (the reason is in the message).
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> c = zs.compare(0.5, models=["hertz"], quantities=["tau_d", "e"])
+        >>> import pathlib, tempfile
+        >>> out = c.to_csv(pathlib.Path(tempfile.mkdtemp()) / "compare.csv")
+        >>> out.read_text().splitlines()[0]
+        'model,tau_d,tau_d_rel_error,e,e_rel_error'
+        """
         path = Path(path)
         recs = self.records()
         try:
@@ -126,17 +206,36 @@ class Comparison:
             raise ValueError(f"cannot write {path}: {exc.strerror}") from None
         return path
 
-    def to_pandas(self):
-        """The records as a ``pandas.DataFrame`` indexed by model (pandas is optional)."""
+    def to_pandas(self) -> Any:  # a pandas.DataFrame: pandas is optional and has no stubs here
+        """The records as a ``pandas.DataFrame`` indexed by model (pandas is optional).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per model; the columns of :meth:`records`.
+
+        Raises
+        ------
+        ImportError
+            When pandas is not installed (``pip install pandas``).
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> c = zs.compare(0.5, models=["hertz"], quantities=["tau_d", "e"])
+        >>> df = c.to_pandas()
+        >>> list(df.index), list(df.columns)
+        (['exact', 'hertz'], ['tau_d', 'tau_d_rel_error', 'e', 'e_rel_error'])
+        """
         try:
-            import pandas as pd
+            import pandas as pd  # type: ignore[import-untyped]  # optional, no stubs installed
         except ImportError:
             raise ImportError("Comparison.to_pandas needs pandas, an optional dependency: "
                               "pip install pandas") from None
         return pd.DataFrame(self.records()).set_index("model")
 
 
-def _rel_error(value, ref):
+def _rel_error(value: float, ref: float) -> float | None:
     if value == ref:
         return 0.0
     if ref == 0:
@@ -144,7 +243,8 @@ def _rel_error(value, ref):
     return abs(value - ref) / abs(ref)
 
 
-def compare(lam_or_scene, models=None, quantities=None) -> Comparison:
+def compare(lam_or_scene: RealLike | Scene, models: str | Sequence[str] | None = None,
+            quantities: str | Sequence[str] | None = None) -> Comparison:
     """Every model that accepts this impact, side by side, with its relative error against exact.
 
     Parameters
@@ -183,12 +283,14 @@ def compare(lam_or_scene, models=None, quantities=None) -> Comparison:
     from ..params import as_lambda
     from .scene import SCENE_FIELDS
 
-    scene = lam_or_scene if callable(getattr(lam_or_scene, "summary", None)) else None
+    scene = (cast("Scene", lam_or_scene) if callable(getattr(lam_or_scene, "summary", None))
+             else None)
+    units: dict[str, str]
     if scene is None:
         if isinstance(lam_or_scene, bool) or not isinstance(lam_or_scene, numbers.Real):
             raise ValueError(f"compare takes one lambda (a number >= 0) or a Scene, got "
                              f"{lam_or_scene!r}")
-        lam = float(as_lambda(lam_or_scene))
+        lam = float(as_lambda(cast(float, lam_or_scene)))
         allowed_q = tuple(f for f in SUMMARY_FIELDS if f != "lam")
         units = {}
     else:
@@ -203,7 +305,7 @@ def compare(lam_or_scene, models=None, quantities=None) -> Comparison:
             if q not in allowed_q:
                 raise ValueError(f"unknown quantity {q!r}; allowed: {', '.join(allowed_q)}")
     if models is None:
-        names = [n for n, m in REGISTRY.items() if bool(m.valid(lam))]
+        names = [n for n, m in REGISTRY.items() if bool(m.valid(np.asarray(lam)))]
     else:
         names = [models] if isinstance(models, str) else list(models)
         for n in names:
@@ -211,7 +313,7 @@ def compare(lam_or_scene, models=None, quantities=None) -> Comparison:
                 raise ValueError(f"unknown model {n!r}; allowed: {', '.join(REGISTRY)}")
     names = ["exact"] + [n for n in names if n != "exact"]
 
-    def values_of(name):
+    def values_of(name: str) -> dict[str, float]:
         if scene is not None:
             r = scene.result(model=name, warn=False)
             got = {q: getattr(r, q) for q in quantities}

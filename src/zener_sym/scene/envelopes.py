@@ -40,6 +40,7 @@ import json
 import math
 from importlib import resources
 from pathlib import Path
+from typing import Any
 
 __all__ = ["SCHEMA", "INTERVALS", "QUANTITIES", "SUMMARY_QUANTITIES", "HISTORY_QUANTITIES",
            "ABSOLUTE_QUANTITIES", "FLOOR", "load", "save", "compare", "path"]
@@ -62,7 +63,7 @@ def path() -> Path:
     return Path(str(resources.files("zener_sym") / "data" / "envelopes.json"))
 
 
-def save(table: dict, where: Path | None = None) -> Path:
+def save(table: dict[str, Any], where: Path | None = None) -> Path:
     """Write ``table`` as stable JSON (sorted keys, fixed indentation)."""
     where = Path(where) if where is not None else path()
     where.parent.mkdir(parents=True, exist_ok=True)
@@ -70,11 +71,11 @@ def save(table: dict, where: Path | None = None) -> Path:
     return where
 
 
-def load(where: Path | None = None) -> dict:
+def load(where: Path | None = None) -> dict[str, Any]:
     """The committed table (or the one at ``where``), with its schema checked."""
     where = Path(where) if where is not None else path()
     try:
-        table = json.loads(where.read_text())
+        table: dict[str, Any] = json.loads(where.read_text())
     except FileNotFoundError:
         raise FileNotFoundError(f"no envelope table at {where}; run 'zener-sym envelopes'") \
             from None
@@ -83,7 +84,8 @@ def load(where: Path | None = None) -> dict:
     return table
 
 
-def compare(old: dict, new: dict, decades: float = 0.5, noise: float = 1e-9) -> list[str]:
+def compare(old: dict[str, Any], new: dict[str, Any], decades: float = 0.5,
+            noise: float = 1e-9) -> list[str]:
     """Differences that make ``old`` stale relative to ``new``: other models, intervals or
     quantities, availability, or an envelope differing by more than ``decades`` in log10
     (values below ``noise`` count as ``noise``: round-off is not staleness)."""

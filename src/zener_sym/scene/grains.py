@@ -29,19 +29,21 @@ from __future__ import annotations
 import math
 import numbers
 from dataclasses import dataclass, field
+from typing import overload
 
 import numpy as np
 
 from ..api import history, summary
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
+from ..typing import FloatArray, RealArrayLike, RealLike
 from .materials import Material, get_material
 from .units import si_value
 
 __all__ = ["viscoelastic_lambda", "GrainImpact", "grain_impact", "GrainContact", "grain_contact"]
 
 
-def _positive(value, field: str, unit: str, what: str) -> float:
+def _positive(value: object, field: str, unit: str, what: str) -> float:
     """``value`` as a float if it is a finite real > 0; ValueError naming ``field`` otherwise."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ValueError(f"{field} ({what}) must be a real number in {unit}, got {value!r}; "
@@ -53,7 +55,8 @@ def _positive(value, field: str, unit: str, what: str) -> float:
     return v
 
 
-def _pos_array(value, name, unit, what):
+def _pos_array(value: object, name: str, unit: str, what: str) -> FloatArray:
+    """``value`` as a float array if every entry is a finite real > 0; ValueError otherwise."""
     arr = np.asarray(value, dtype=float) if not isinstance(value, (bool, str)) else None
     if arr is None or arr.dtype.kind not in "fiu":
         raise ValueError(f"{name} ({what}) must be a real number in {unit}, got {value!r}; "
@@ -65,7 +68,17 @@ def _pos_array(value, name, unit, what):
     return arr
 
 
-def viscoelastic_lambda(A, rho, m_eff, v0):
+@overload
+def viscoelastic_lambda(A: RealLike, rho: RealLike, m_eff: RealLike, v0: RealLike) -> float: ...
+
+
+@overload
+def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
+                        v0: RealArrayLike) -> float | FloatArray: ...
+
+
+def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
+                        v0: RealArrayLike) -> float | FloatArray:
     """Zener's lambda of a viscoelastic grain contact, lambda = A (rho/m_eff)^{2/5} v0^{1/5}.
 
     Derived in ``zener_sym.derivation.viscoelastic`` by mapping m_eff xi'' + rho (xi^{3/2} +
@@ -102,7 +115,7 @@ def viscoelastic_lambda(A, rho, m_eff, v0):
     r_ = _pos_array(rho, "rho", "N/m^(3/2)", "Hertz constant (4/3) E* sqrt(R_eff)")
     m_ = _pos_array(m_eff, "m_eff", "kg", "effective mass")
     v_ = _pos_array(v0, "v0", "m/s", "impact speed")
-    lam = A_ * (r_ / m_) ** 0.4 * v_ ** 0.2
+    lam: FloatArray = A_ * (r_ / m_) ** 0.4 * v_ ** 0.2
     return float(lam) if lam.ndim == 0 else lam
 
 
@@ -159,8 +172,8 @@ class GrainImpact:
     rho: float
     R_eff: float
     E_star: float
-    t_s: np.ndarray = field(repr=False)
-    force_N: np.ndarray = field(repr=False)
+    t_s: FloatArray = field(repr=False)
+    force_N: FloatArray = field(repr=False)
 
 
 _CRITERIA = {"force": "contact ends where the viscoelastic force rho (xi^3/2 + A d/dt xi^3/2) "
@@ -172,7 +185,19 @@ _CRITERIA = {"force": "contact ends where the viscoelastic force rho (xi^3/2 + A
 class GrainContact:
     """The constants of a viscoelastic grain contact (SI): effective mass m_eff [kg], Hertz
     constant rho = (4/3) E* sqrt(R_eff) [N/m^{3/2}], effective radius R_eff [m] and modulus
-    E* [Pa] (module docstring)."""
+    E* [Pa] (module docstring).
+
+    Attributes
+    ----------
+    m_eff, rho, R_eff, E_star : float
+
+    Examples
+    --------
+    >>> from zener_sym.scene.grains import grain_contact
+    >>> c = grain_contact("1 mm", 1e-5, "glass", R2="1 mm", m2=1e-5, material2="glass")
+    >>> c.m_eff, c.R_eff
+    (5e-06, 0.0005)
+    """
 
     m_eff: float
     rho: float
@@ -180,11 +205,22 @@ class GrainContact:
     E_star: float
 
 
-def grain_contact(R1, m1, material1, *, R2=None, m2=None, material2=None,
-                  wall=None) -> GrainContact:
+def grain_contact(R1: float | str, m1: float, material1: Material | str, *,
+                  R2: float | str | None = None, m2: float | None = None,
+                  material2: Material | str | None = None,
+                  wall: Material | str | None = None) -> GrainContact:
     """m_eff, rho, R_eff and E* of two spheres, or of sphere 1 on a wall (inputs as
     :func:`grain_impact`, which uses it, as do the inverse and the fit of
     :mod:`zener_sym.scene.calibrate`).
+
+    Parameters
+    ----------
+    R1, m1, material1, R2, m2, material2, wall
+        As in :func:`grain_impact`.
+
+    Returns
+    -------
+    GrainContact
 
     Raises
     ------
@@ -201,12 +237,12 @@ def grain_contact(R1, m1, material1, *, R2=None, m2=None, material2=None,
     if all(given) and wall is not None:
         raise ValueError("give either sphere 2 (R2, m2, material2) or wall=, not both")
     inv_E = (1 - mat1.nu**2) / mat1.E
-    if all(given):
-        R2 = si_value(R2, "length", "R2")
-        m2 = _positive(m2, "m2", "kg", "mass of sphere 2")
+    if R2 is not None and m2 is not None and material2 is not None:
+        r2 = si_value(R2, "length", "R2")
+        mass2 = _positive(m2, "m2", "kg", "mass of sphere 2")
         mat2 = get_material(material2)
         inv_E += (1 - mat2.nu**2) / mat2.E
-        R_eff, m_eff = R1 * R2 / (R1 + R2), m1 * m2 / (m1 + m2)
+        R_eff, m_eff = R1 * r2 / (R1 + r2), m1 * mass2 / (m1 + mass2)
     else:
         if wall is not None:
             w: Material = get_material(wall)
@@ -217,20 +253,24 @@ def grain_contact(R1, m1, material1, *, R2=None, m2=None, material2=None,
                         E_star=E_star)
 
 
-def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, wall=None,
-                 contact_end="force", n_history=201) -> GrainImpact:
+def grain_impact(R1: float | str, m1: float, material1: Material | str, A: float,
+                 v0: float | str, *, R2: float | str | None = None, m2: float | None = None,
+                 material2: Material | str | None = None, wall: Material | str | None = None,
+                 contact_end: str = "force", n_history: int = 201) -> GrainImpact:
     """Two viscoelastic spheres, or a sphere on a wall, colliding head-on at speed ``v0``.
 
     Parameters
     ----------
-    R1, m1 : float
-        Radius [m] (or a string with a unit, e.g. ``"1 mm"``) and mass [kg] of sphere 1.
+    R1 : float or str
+        Radius of sphere 1 [m], or a string with a unit (e.g. ``"1 mm"``).
+    m1 : float
+        Mass of sphere 1 [kg].
     material1 : Material or str
         Its elastic constants (``zener_sym.Material`` or a preset name; the density is not used,
         the mass is given).
     A : float
         Dissipative constant of the contact [s] (module docstring).
-    v0 : float
+    v0 : float or str
         Normal relative impact speed [m/s] (or a string with a unit).
     R2, m2, material2 : optional
         Sphere 2. Leave all three out for a wall.
@@ -245,6 +285,13 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
     Returns
     -------
     GrainImpact
+        e, the contact duration, peak force and compression, the scales and the force history.
+
+    Raises
+    ------
+    ValueError
+        For a non-positive or non-finite radius, mass, A or speed, an unknown criterion or
+        material, a half-given sphere 2, or a lambda outside the exact model's range.
 
     Examples
     --------
@@ -253,12 +300,8 @@ def grain_impact(R1, m1, material1, A, v0, *, R2=None, m2=None, material2=None, 
     ...                     material2="steel")
     >>> r.criterion.startswith("contact ends where the viscoelastic force")
     True
-
-    Raises
-    ------
-    ValueError
-        For a non-positive or non-finite radius, mass, A or speed, an unknown criterion or
-        material, a half-given sphere 2, or a lambda outside the exact model's range.
+    >>> round(r.e, 4), round(r.lam, 4) == round(zs.viscoelastic_lambda(2e-6, r.rho, r.m_eff, 2.0), 4)
+    (0.1355, True)
     """
     contact_end = check_contact_end(contact_end)
     A = _positive(A, "A", "s", "dissipative constant")

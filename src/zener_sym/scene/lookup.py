@@ -10,23 +10,49 @@ from __future__ import annotations
 
 import io
 import math
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
 from ..api import summary
 from ..exact.force_end import check_contact_end
 from ..models import get_model
+from ..typing import FloatArray, RealArrayLike
 
 __all__ = ["parse_lam_grid", "lookup_table", "lookup_csv"]
 
 
-def parse_lam_grid(spec) -> np.ndarray:
-    """``"start:stop:n"`` (n equally spaced values, ends included), ``"x"``, or an array.
+def parse_lam_grid(spec: str | RealArrayLike) -> FloatArray:
+    """A grid of Zener's lambda (Eq. 11) from ``"start:stop:n"``, ``"x"`` or values.
+
+    Parameters
+    ----------
+    spec : str or float or array_like
+        ``"start:stop:n"`` (n equally spaced values, ends included), one number as a string
+        (``"0.5"``), or the values themselves.
+
+    Returns
+    -------
+    numpy.ndarray
+        The grid, 1-d, float.
 
     Raises
     ------
     ValueError
         For a malformed spec, n < 1, stop < start or a non-finite or negative value.
+
+    Examples
+    --------
+    >>> from zener_sym.scene.lookup import parse_lam_grid
+    >>> parse_lam_grid("0:1:5")
+    array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+    >>> parse_lam_grid(0.5)
+    array([0.5])
+    >>> parse_lam_grid("0:1")
+    Traceback (most recent call last):
+    ...
+    ValueError: lambda grid '0:1' is not understood; allowed: 'start:stop:n' (n >= 1 values from start to stop >= start, ends included) or a single number
     """
     if isinstance(spec, str):
         parts = spec.split(":")
@@ -53,8 +79,9 @@ def parse_lam_grid(spec) -> np.ndarray:
     return grid
 
 
-def lookup_table(quantities=("e", "tau_d"), lam="0:5:1001", *, contact_end="delta",
-                 model="exact", **options) -> dict:
+def lookup_table(quantities: str | Sequence[str] = ("e", "tau_d"),
+                 lam: str | RealArrayLike = "0:5:1001", *, contact_end: str = "delta",
+                 model: str = "exact", **options: Any) -> dict[str, FloatArray]:
     """The summary quantities of ``model`` on a lambda grid.
 
     Parameters
@@ -80,6 +107,16 @@ def lookup_table(quantities=("e", "tau_d"), lam="0:5:1001", *, contact_end="delt
     ValueError
         For an unknown quantity (the allowed ones are listed), a bad grid or criterion, or a
         lambda the model does not accept (its range is stated).
+
+    Examples
+    --------
+    >>> from zener_sym.scene.lookup import lookup_table
+    >>> t = lookup_table("e,tau_d", "0:2:3")
+    >>> list(t), t["e"].round(4), t["tau_d"].round(4)
+    (['lam', 'e', 'tau_d'], array([1.    , 0.1841, 0.0207]), array([3.2181, 4.3876, 8.4832]))
+    >>> t = lookup_table("e", [0.5], contact_end="force")    # the grains' end of contact
+    >>> round(float(t["e"][0]), 4)
+    0.4788
     """
     contact_end = check_contact_end(contact_end)
     if isinstance(quantities, str):
@@ -94,18 +131,37 @@ def lookup_table(quantities=("e", "tau_d"), lam="0:5:1001", *, contact_end="delt
     if contact_end != "delta" or "contact_end" in m.options:
         options["contact_end"] = contact_end
     s = summary(grid, model=model, **options)
-    out = {"lam": grid}
+    out: dict[str, FloatArray] = {"lam": grid}
     for q in quantities:
         out[q] = np.atleast_1d(np.asarray(getattr(s, q), dtype=float))
     return out
 
 
-def lookup_csv(table: dict) -> str:
+def lookup_csv(table: Mapping[str, RealArrayLike]) -> str:
     """CSV text of a :func:`lookup_table` result: a header of names, then one row per lambda with
-    17 significant digits (round-trips a float64)."""
+    17 significant digits (round-trips a float64).
+
+    Parameters
+    ----------
+    table : mapping of str to array_like
+        Column name -> values, all of one length (a :func:`lookup_table` result).
+
+    Returns
+    -------
+    str
+        The CSV text, one line per row, ending in a newline.
+
+    Examples
+    --------
+    >>> from zener_sym.scene.lookup import lookup_csv, lookup_table
+    >>> print(lookup_csv(lookup_table("e", "0:1:2")), end="")
+    lam,e
+    0,1
+    1,0.18412287416504775
+    """
     buf = io.StringIO()
     names = list(table)
     buf.write(",".join(names) + "\n")
-    for row in zip(*(table[n] for n in names)):
+    for row in zip(*(np.asarray(table[n], dtype=float) for n in names)):
         buf.write(",".join(f"{x:.17g}" for x in row) + "\n")
     return buf.getvalue()

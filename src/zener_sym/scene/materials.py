@@ -15,7 +15,7 @@ __all__ = ["Material", "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_P
            "get_material"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Material:
     """An isotropic linear-elastic material.
 
@@ -55,26 +55,64 @@ class Material:
     source: str = "user"
     yield_strength: float | None = None
 
-    def __post_init__(self):
-        object.__setattr__(self, "E", si_value(self.E, "pressure", "E"))
-        object.__setattr__(self, "rho", si_value(self.rho, "density", "rho"))
-        nu = self.nu
-        if isinstance(nu, bool) or not isinstance(nu, numbers.Real) or not math.isfinite(nu) \
-                or not -1.0 < float(nu) < 0.5:
+    # An __init__ of our own (not the dataclass's): E, rho and the yield strength accept a
+    # string with a unit, and the stored fields are floats in SI units.
+    def __init__(self, E: float | str, nu: float, rho: float | str, name: str = "custom",
+                 source: str = "user", yield_strength: float | str | None = None) -> None:
+        nu_in: object = nu  # checked at run time, whatever a caller passed
+        if isinstance(nu_in, bool) or not isinstance(nu_in, numbers.Real) \
+                or not math.isfinite(nu_in) or not -1.0 < float(nu_in) < 0.5:
             raise ValueError(f"nu (Poisson's ratio) must be a finite real with -1 < nu < 0.5, "
                              f"got {nu!r}")
-        object.__setattr__(self, "nu", float(nu))
-        if self.yield_strength is not None:
-            object.__setattr__(self, "yield_strength", si_value(
-                self.yield_strength, "pressure", "yield_strength"))
+        object.__setattr__(self, "E", si_value(E, "pressure", "E"))
+        object.__setattr__(self, "nu", float(nu_in))
+        object.__setattr__(self, "rho", si_value(rho, "density", "rho"))
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "source", source)
+        object.__setattr__(self, "yield_strength", None if yield_strength is None else
+                           si_value(yield_strength, "pressure", "yield_strength"))
 
     @property
     def plane_modulus(self) -> float:
-        """E / (1 - nu^2) [Pa], the modulus that enters Hertz contact and plate bending."""
+        """E / (1 - nu^2) [Pa], the modulus that enters Hertz contact and plate bending.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> f"{zs.GLASS.plane_modulus / 1e9:.4g} GPa"
+        '76.37 GPa'
+        """
         return self.E / (1.0 - self.nu**2)
 
-    def with_yield(self, yield_strength: float) -> "Material":
-        """A copy with the given yield strength [Pa]."""
+    def with_yield(self, yield_strength: float | str) -> Material:
+        """A copy with the given yield strength (enables the scene's yield warning).
+
+        Parameters
+        ----------
+        yield_strength : float or str
+            Uniaxial yield stress Y: Pa, or a string with a unit (``"250 MPa"``).
+
+        Returns
+        -------
+        Material
+            The same material with ``yield_strength`` set.
+
+        Raises
+        ------
+        ValueError
+            For a string without a unit or a value outside the plausible range.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> soft = zs.STEEL.with_yield("250 MPa")
+        >>> soft.yield_strength, soft.E == zs.STEEL.E, zs.STEEL.yield_strength
+        (250000000.0, True, None)
+        """
         return Material(self.E, self.nu, self.rho, self.name, self.source, yield_strength)
 
 
@@ -101,7 +139,7 @@ PRESETS = {m.name: m for m in (STEEL, GLASS, ALUMINIUM, TABLE1_SPHERE, TABLE1_PL
 PRESETS["aluminum"] = ALUMINIUM
 
 
-def get_material(name_or_material) -> Material:
+def get_material(name_or_material: Material | str) -> Material:
     """A ``Material`` unchanged, or the preset of that name; ValueError listing presets otherwise."""
     if isinstance(name_or_material, Material):
         return name_or_material

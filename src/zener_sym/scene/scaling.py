@@ -49,17 +49,17 @@ __all__ = ["effective_modulus", "sphere_mass", "plate_admittance", "plate_wave_s
            "force_scale", "length_scale"]
 
 
-def effective_modulus(E1, nu1, E2, nu2) -> float:
+def effective_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
     """E* [Pa] with 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (below Eq. 8)."""
     return 1.0 / ((1.0 - nu1**2) / E1 + (1.0 - nu2**2) / E2)
 
 
-def sphere_mass(R, rho1) -> float:
+def sphere_mass(R: float, rho1: float) -> float:
     """m1 = (4/3) pi R^3 rho1 [kg]."""
     return 4.0 / 3.0 * math.pi * R**3 * rho1
 
 
-def plate_admittance(E2, nu2, rho2, H) -> float:
+def plate_admittance(E2: float, nu2: float, rho2: float, H: float) -> float:
     """Zener's alpha = (1/(4 rho2 H^2)) sqrt(3 rho2 (1 - nu2^2)/E2) [s/kg] (below Eq. 7).
 
     Equal to 1/(8 sqrt(D rho2 H)): the centre velocity of an infinite thin plate per unit point
@@ -68,45 +68,45 @@ def plate_admittance(E2, nu2, rho2, H) -> float:
     return math.sqrt(3.0 * rho2 * (1.0 - nu2**2) / E2) / (4.0 * rho2 * H**2)
 
 
-def plate_wave_speed(E2, nu2, rho2) -> float:
+def plate_wave_speed(E2: float, nu2: float, rho2: float) -> float:
     """V_W = sqrt(E2 / (rho2 (1 - nu2^2))) [m/s], quasi-longitudinal plate waves (below Eq. 11)."""
     return math.sqrt(E2 / (rho2 * (1.0 - nu2**2)))
 
 
-def flexural_rigidity(E2, nu2, H) -> float:
+def flexural_rigidity(E2: float, nu2: float, H: float) -> float:
     """D = E2 H^3 / (12 (1 - nu2^2)) [N m]."""
     return E2 * H**3 / (12.0 * (1.0 - nu2**2))
 
 
-def characteristic_time(m_star, E_star, R, V0) -> float:
+def characteristic_time(m_star: float, E_star: float, R: float, V0: float) -> float:
     """T = (m* / ((4/3) E* sqrt(R V0)))^{2/5} [s] (Eq. 9, exponent derived: 2/5)."""
-    return (m_star / (4.0 / 3.0 * E_star * math.sqrt(R * V0))) ** 0.4
+    return float((m_star / (4.0 / 3.0 * E_star * math.sqrt(R * V0))) ** 0.4)
 
 
-def inelasticity(alpha, m_star, T) -> float:
+def inelasticity(alpha: float, m_star: float, T: float) -> float:
     """lambda = alpha m* / T (from nondimensionalising Eq. 7; see the module docstring)."""
     return alpha * m_star / T
 
 
-def inelasticity_eq11(R, H, V0, rho1, E1, nu1, rho2, E2, nu2) -> float:
+def inelasticity_eq11(R: float, H: float, V0: float, rho1: float, E1: float, nu1: float, rho2: float, E2: float, nu2: float) -> float:
     """lambda in the closed form of the derived Eq. (11) (m* = m1); equals ``inelasticity``."""
     E1p, E2p = E1 / (1.0 - nu1**2), E2 / (1.0 - nu2**2)
     VW = math.sqrt(E2p / rho2)
-    return (math.pi**0.6 / math.sqrt(3.0) * (R / H) ** 2 * (V0 / VW) ** 0.2
-            * (rho1 / rho2) ** 0.6 * (E1p / (E1p + E2p)) ** 0.4)
+    return float(math.pi**0.6 / math.sqrt(3.0) * (R / H) ** 2 * (V0 / VW) ** 0.2
+                 * (rho1 / rho2) ** 0.6 * (E1p / (E1p + E2p)) ** 0.4)
 
 
-def chi(rho1, E_star, rho2, E2, nu2) -> float:
+def chi(rho1: float, E_star: float, rho2: float, E2: float, nu2: float) -> float:
     """chi [(s/m)^{1/5}] of Eq. (76), derived: xi = chi V0^{1/5} (R/H)^2 int F_bar^2 dtau."""
-    return (2.0 * math.pi**0.6 / math.sqrt(3.0) * math.sqrt(rho2 * (1.0 - nu2**2) / E2)
-            * (E_star / rho2) ** 0.4 * (rho1 / rho2) ** 0.6)
+    return float(2.0 * math.pi**0.6 / math.sqrt(3.0) * math.sqrt(rho2 * (1.0 - nu2**2) / E2)
+                 * (E_star / rho2) ** 0.4 * (rho1 / rho2) ** 0.6)
 
 
-def force_scale(m_star, V0, T) -> float:
+def force_scale(m_star: float, V0: float, T: float) -> float:
     """F / F_bar = m* V0 / T [N] (= K (T V0)^{3/2} by the choice of T)."""
     return m_star * V0 / T
 
 
-def length_scale(T, V0) -> float:
+def length_scale(T: float, V0: float) -> float:
     """delta / delta_bar = T V0 [m] (Eq. 9)."""
     return T * V0

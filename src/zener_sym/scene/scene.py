@@ -19,9 +19,12 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, field
+from typing import Any, cast
 
 import numpy as np
 
+from ..api import Summary
+from ..typing import FloatArray, RealArrayLike
 from . import checks, scaling
 from .checks import ZenerWarning
 from .materials import Material, get_material
@@ -99,12 +102,16 @@ class Scene:
     (0.306, 21.99, 186)
     """
 
-    def __init__(self, sphere, plate, radius, thickness, v0=None, plate_radius=None, *,
-                 drop_height=None):
+    def __init__(self, sphere: Material | str, plate: Material | str, radius: float | str,
+                 thickness: float | str, v0: float | str | None = None,
+                 plate_radius: float | str | None = None, *,
+                 drop_height: float | str | None = None) -> None:
         self.sphere: Material = get_material(sphere)
         self.plate: Material = get_material(plate)
-        self.radius = si_value(radius, "length", "radius")
-        self.thickness = si_value(thickness, "length", "thickness")
+        self.radius: float = si_value(radius, "length", "radius")
+        self.thickness: float = si_value(thickness, "length", "thickness")
+        self.drop_height: float | None
+        self.v0: float
         if (v0 is None) == (drop_height is None):
             raise ValueError("give exactly one of v0 (impact speed, e.g. '3 m/s') and "
                              f"drop_height (e.g. '0.5 m'), got v0={v0!r}, "
@@ -114,8 +121,8 @@ class Scene:
             self.v0 = math.sqrt(2.0 * G_STANDARD * self.drop_height)
         else:
             self.drop_height = None
-            self.v0 = si_value(v0, "speed", "v0")
-        self.plate_radius = (None if plate_radius is None else
+            self.v0 = si_value(cast("float | str", v0), "speed", "v0")
+        self.plate_radius: float | None = (None if plate_radius is None else
                              si_value(plate_radius, "length", "plate_radius"))
         if self.plate_radius is not None and self.plate_radius <= self.radius:
             raise ValueError(f"plate_radius must exceed the sphere radius {self.radius:g} m, got "
@@ -127,84 +134,261 @@ class Scene:
     # -- derived properties (SI) ------------------------------------------------------------
     @property
     def m1(self) -> float:
-        """Sphere mass [kg]."""
+        """Sphere mass m1 = (4/3) pi R^3 rho1 [kg].
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> f"{sc.m1:.4g} kg"
+        '3.288e-05 kg'
+        """
         return scaling.sphere_mass(self.radius, self.sphere.rho)
 
     @property
     def m_star(self) -> float:
-        """Reduced mass of Eq. (7) [kg]: m1 (infinite plate)."""
+        """Reduced mass of Eq. (7) [kg]: m1 (infinite plate).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> sc.m_star == sc.m1
+        True
+        """
         return self.m1
 
     @property
     def E_star(self) -> float:
-        """Effective contact modulus E* [Pa]."""
+        """Effective contact modulus E* [Pa], 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Eq. 8).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> f"{sc.E_star / 1e9:.4g} GPa"
+        '57.38 GPa'
+        """
         s, p = self.sphere, self.plate
         return scaling.effective_modulus(s.E, s.nu, p.E, p.nu)
 
     @property
     def alpha(self) -> float:
-        """Plate point-load admittance alpha [s/kg] (below Eq. 7)."""
+        """Plate point-load admittance alpha [s/kg] (below Eq. 7).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> f"{sc.alpha:.4g} s/kg"
+        '0.007835 s/kg'
+        >>> round(sc.alpha * 8 * (sc.D * sc.plate.rho * sc.thickness) ** 0.5, 12)  # 1/(8 sqrt(D rho2 H))
+        1.0
+        """
         p = self.plate
         return scaling.plate_admittance(p.E, p.nu, p.rho, self.thickness)
 
     @property
     def V_W(self) -> float:
-        """Quasi-longitudinal plate-wave speed [m/s] (below Eq. 11)."""
+        """Quasi-longitudinal plate-wave speed V_W = sqrt(E2 / (rho2 (1 - nu2^2))) [m/s] (below
+        Eq. 11).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> f"{sc.V_W:.4g} m/s"
+        '5527 m/s'
+        """
         p = self.plate
         return scaling.plate_wave_speed(p.E, p.nu, p.rho)
 
     @property
     def D(self) -> float:
-        """Flexural rigidity of the plate [N m]."""
+        """Flexural rigidity of the plate D = E2 H^3 / (12 (1 - nu2^2)) [N m].
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> f"{sc.D:.4g} N m"
+        '50.91 N m'
+        """
         return scaling.flexural_rigidity(self.plate.E, self.plate.nu, self.thickness)
 
     @property
     def T(self) -> float:
-        """Characteristic time T [s] (Eq. 9, derived exponent 2/5)."""
+        """Characteristic time T [s] (Eq. 9, derived exponent 2/5).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> f"{sc.T * 1e6:.4g} us"
+        '2.84 us'
+        """
         return scaling.characteristic_time(self.m_star, self.E_star, self.radius, self.v0)
 
     @property
     def lam(self) -> float:
-        """Zener's inelasticity parameter lambda = alpha m*/T (derived Eq. 11)."""
+        """Zener's inelasticity parameter lambda = alpha m*/T (derived Eq. 11).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> round(sc.lam, 5), round(sc.alpha * sc.m_star / sc.T, 5)
+        (0.09071, 0.09071)
+        """
         return scaling.inelasticity(self.alpha, self.m_star, self.T)
 
     @property
     def chi(self) -> float:
-        """chi [(s/m)^{1/5}] of Eq. (76), derived."""
+        """chi [(s/m)^{1/5}] of Eq. (76), derived: xi = chi V0^{1/5} (R/H)^2 int F^2 dtau.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> round(sc.chi, 4)
+        0.7257
+        """
         s, p = self.sphere, self.plate
         return scaling.chi(s.rho, self.E_star, p.rho, p.E, p.nu)
 
     @property
     def force_scale(self) -> float:
-        """F / F_bar = m* V0 / T [N]."""
+        """The force unit F / F_bar = m* V0 / T [N] (Eq. 9).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> f"{sc.force_scale:.4g} N"
+        '11.58 N'
+        """
         return scaling.force_scale(self.m_star, self.v0, self.T)
 
     @property
     def length_scale(self) -> float:
-        """delta / delta_bar = T V0 [m]."""
+        """The compression unit delta / delta_bar = T V0 [m] (Eq. 9).
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> sc.length_scale == sc.T * sc.v0
+        True
+        """
         return scaling.length_scale(self.T, self.v0)
 
     @property
-    def warnings(self) -> list:
-        """The checks that need only the inputs, as (code, message) pairs (no warning issued)."""
+    def warnings(self) -> list[tuple[str, str]]:
+        """The checks that need only the inputs, as (code, message) pairs (no warning issued).
+
+        Returns
+        -------
+        list of (str, str)
+            The ``ham-bound`` and ``thick-plate`` checks that apply (``zener_sym.scene.checks``).
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").warnings
+        []
+        >>> sc = zs.Scene("steel", "steel", radius="5 mm", thickness="10 cm", v0="1 m/s")
+        >>> [code for code, message in sc.warnings]
+        ['thick-plate']
+        """
         return checks.static_checks(self)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         pr = "" if self.plate_radius is None else f", plate_radius={self.plate_radius!r}"
         return (f"Scene(sphere={self.sphere.name!r}, plate={self.plate.name!r}, "
                 f"radius={self.radius!r}, thickness={self.thickness!r}, v0={self.v0!r}{pr})")
 
     # -- results ----------------------------------------------------------------------------
     def summary(self, model: str | None = None, rtol: float = 1e-3, quantity: str = "all",
-                **options) -> "SceneResult":
+                **options: Any) -> SceneResult:
         """The scene's dimensional result; ``zener_sym.summary(scene, ...)`` calls this.
 
-        Same parameters as :meth:`result`.
+        Parameters
+        ----------
+        model : str, optional
+            A name in ``zener_sym.MODELS``; if omitted, the cheapest model meeting ``rtol``.
+        rtol : float
+            Relative accuracy required when choosing the model.
+        quantity : str
+            The quantity the accuracy is asked for ("all" = every summary field reported).
+        **options
+            Passed to the model.
+
+        Returns
+        -------
+        SceneResult
+            As :meth:`result` with ``warn=True``.
+
+        Raises
+        ------
+        ValueError
+            As :meth:`result`.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> r = sc.summary(model="hertz")
+        >>> r.model, r.reason, round(r.e, 3)
+        ('hertz', "model 'hertz' requested", 1.0)
         """
         return self.result(model=model, rtol=rtol, quantity=quantity, **options)
 
     def result(self, model: str | None = None, rtol: float = 1e-3, quantity: str = "all",
-               warn: bool = True, **options) -> "SceneResult":
+               warn: bool = True, **options: Any) -> SceneResult:
         """Dimensional results with ``model``, or with the cheapest model meeting ``rtol``.
 
         Parameters
@@ -220,6 +404,32 @@ class Scene:
             Issue the checks as ``ZenerWarning`` (they are listed in the result either way).
         **options
             Passed to the model.
+
+        Returns
+        -------
+        SceneResult
+            SI and dimensionless results, the model used and why, and the validity checks.
+
+        Raises
+        ------
+        ValueError
+            For an unknown model, option or quantity, a bad ``rtol``, or a lambda outside the
+            model's validity.
+
+        Warns
+        -----
+        ZenerWarning
+            For each validity check that fails, when ``warn`` is true.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+        >>> r = sc.result(rtol=1e-6, quantity="e", warn=False)
+        >>> r.model, round(r.e, 6)
+        ('series', 0.856623)
+        >>> round(sc.result(model="exact").e, 6)
+        0.856623
         """
         from ..api import summary as _summary
         from .select import select_model
@@ -234,7 +444,10 @@ class Scene:
         # A model that cannot give a quantity leaves it None (shown as n/a); asking the
         # dimensionless summary for it raises FieldUnavailableError naming field and model.
         have = set(s.fields)
-        get = lambda f, scale=1.0: scale * getattr(s, f) if f in have else None  # noqa: E731
+
+        def get(f: str, scale: float = 1.0) -> float | None:
+            return scale * float(getattr(s, f)) if f in have else None
+
         res = SceneResult(
             scene=self, model=model, reason=reason, lam=self.lam, summary=s,
             contact_duration_s=get("tau_d", T), max_force_N=get("F_m", self.force_scale),
@@ -244,13 +457,12 @@ class Scene:
             options=dict(options),
         )
         found = checks.static_checks(self)
-        if None in (res.contact_duration_s, res.max_compression_m, res.max_force_N,
-                    res.final_deflection_m):
+        t_d, d_m, F_m = res.contact_duration_s, res.max_compression_m, res.max_force_N
+        if t_d is None or d_m is None or F_m is None or res.final_deflection_m is None:
             found.append(("not-checked", f"model {model!r} does not give every quantity the "
                           "plate and yield checks need; they were skipped"))
         else:
-            found += checks.dynamic_checks(self, res.contact_duration_s, res.max_compression_m,
-                                           res.max_force_N, s.impulse)
+            found += checks.dynamic_checks(self, t_d, d_m, F_m, float(s.impulse))
         res.warnings = found
         if warn:
             for code, msg in found:
@@ -287,7 +499,9 @@ class SceneResult:
         Rebound speed e V0 [m/s].
     final_deflection_m : float or None
         Plate deflection at the end of contact [m].
-    warnings : list
+    options : dict
+        The model options used.
+    warnings : list of (str, str)
         The validity checks as (code, message) pairs.
 
     A field the model cannot give is None (a model chosen by ``select_model`` with quantity
@@ -307,7 +521,7 @@ class SceneResult:
     model: str
     reason: str
     lam: float
-    summary: object
+    summary: Summary
     contact_duration_s: float | None
     max_force_N: float | None
     max_compression_m: float | None
@@ -316,54 +530,151 @@ class SceneResult:
     eta: float | None
     rebound_speed_m_s: float | None
     final_deflection_m: float | None
-    options: dict = field(default_factory=dict)
-    warnings: list = field(default_factory=list)
+    options: dict[str, Any] = field(default_factory=dict)
+    warnings: list[tuple[str, str]] = field(default_factory=list)
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> Any:
         if name in RENAMED:
             raise AttributeError(f"SceneResult.{name} is now {RENAMED[name]!r} (dimensionless "
                                  "fields carry Summary's names, SI fields their unit)")
         raise AttributeError(f"SceneResult has no field {name!r}; fields: "
                              f"{', '.join(f for f, _, _ in SCENE_FIELDS)}, lam, summary")
 
-    def history(self, t, model: str | None = None) -> dict:
-        """Histories at times ``t`` [s] (>= 0) as a dict: ``t_s``, ``force_N``,
-        ``deflection_m`` (plate centre), ``velocity_m_s`` (sphere, positive towards the plate)
-        and ``compression_m``.
+    def history(self, t: RealArrayLike, model: str | None = None) -> dict[str, FloatArray]:
+        """Histories at times ``t`` [s] (>= 0): force, plate deflection, sphere velocity and
+        compression in SI units (Eqs. 45, 47, 64-66).
 
-        Uses the result's model, or ``model`` if given.
+        Parameters
+        ----------
+        t : float or array_like
+            Times since first contact [s], finite and >= 0.
+        model : str, optional
+            A name in ``zener_sym.MODELS`` (default: the result's model, with its options).
+
+        Returns
+        -------
+        dict of str to numpy.ndarray
+            ``t_s``, ``force_N``, ``deflection_m`` (plate centre), ``velocity_m_s`` (sphere,
+            positive towards the plate) and ``compression_m``, each of the shape of ``t``.
+
+        Raises
+        ------
+        ValueError
+            For a time that is not finite and >= 0, or a model that cannot give the histories.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> h = r.history([0.0, 5e-6])
+        >>> sorted(h)
+        ['compression_m', 'deflection_m', 'force_N', 't_s', 'velocity_m_s']
+        >>> [round(float(v), 4) for v in h["velocity_m_s"]]     # V0 at first contact
+        [1.0, -0.1007]
         """
         from ..api import history as _history
 
         sc = self.scene
-        t = np.asarray(t, dtype=float)
-        if not np.all(np.isfinite(t)) or np.any(t < 0):
+        ts = np.asarray(t, dtype=float)
+        if not np.all(np.isfinite(ts)) or np.any(ts < 0):
             raise ValueError("t must be finite times >= 0 in seconds")
         name = model or self.model
-        h = _history(self.lam, t / sc.T, model=name,
+        h = _history(self.lam, ts / sc.T, model=name,
                      **(self.options if name == self.model else {}))
         return {
-            "t_s": t,
+            "t_s": ts,
             "force_N": sc.force_scale * h.force,
             "deflection_m": sc.alpha * sc.m_star * sc.v0 * h.impulse,
             "velocity_m_s": sc.v0 * (1.0 - sc.m_star / sc.m1 * h.impulse),
             "compression_m": sc.length_scale * h.delta,
         }
 
-    def force(self, t):
-        """Contact force F(t) [N] at times ``t`` [s]."""
+    def force(self, t: RealArrayLike) -> FloatArray:
+        """Contact force F(t) [N] (Eq. 45) at times ``t`` [s], with the result's model.
+
+        Parameters
+        ----------
+        t : float or array_like
+            Times since first contact [s], finite and >= 0.
+
+        Returns
+        -------
+        numpy.ndarray
+            F [N], of the shape of ``t``; 0 after the end of contact.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> F = r.force([0.0, 1e-6, 1e-4])
+        >>> [round(float(f), 2) for f in F]
+        [0.0, 2.36, 0.0]
+        """
         return self.history(t)["force_N"]
 
-    def deflection(self, t):
-        """Plate centre deflection w(t) [m] (Eq. 65) at times ``t`` [s]."""
+    def deflection(self, t: RealArrayLike) -> FloatArray:
+        """Plate centre deflection w(t) [m] (Eq. 65) at times ``t`` [s].
+
+        Parameters
+        ----------
+        t : float or array_like
+            Times since first contact [s], finite and >= 0.
+
+        Returns
+        -------
+        numpy.ndarray
+            w [m], positive in the direction of the impact, of the shape of ``t``.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> w_end = float(r.deflection(1e-4))                   # after the contact
+        >>> round(w_end / r.final_deflection_m, 9)
+        1.0
+        """
         return self.history(t)["deflection_m"]
 
-    def velocity(self, t):
-        """Sphere velocity V(t) [m/s] (Eq. 64), positive towards the plate, at ``t`` [s]."""
+    def velocity(self, t: RealArrayLike) -> FloatArray:
+        """Sphere velocity V(t) [m/s] (Eq. 64), positive towards the plate, at ``t`` [s].
+
+        Parameters
+        ----------
+        t : float or array_like
+            Times since first contact [s], finite and >= 0.
+
+        Returns
+        -------
+        numpy.ndarray
+            V [m/s], of the shape of ``t``.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> V = r.velocity([0.0, 1e-4])                # -e V0 after the contact
+        >>> round(float(V[0]), 6), round(float(V[1]) + r.rebound_speed_m_s, 9)
+        (1.0, 0.0)
+        """
         return self.history(t)["velocity_m_s"]
 
-    def table(self) -> list:
-        """Rows (quantity, value, unit) of the inputs, the scalings and the results."""
+    def table(self) -> list[tuple[str, str, str]]:
+        """Rows (quantity, value, unit) of the inputs, the scalings and the results.
+
+        Returns
+        -------
+        list of (str, str, str)
+            The inputs, the scalings (m*, E*, alpha, V_W, T, chi, lambda), the model and why,
+            every field of the result (``n/a`` where the model gives none) and the warnings.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> rows = r.table()
+        >>> rows[2], rows[11]
+        (('radius R', '0.001', 'm'), ('lambda', '0.0907127', '-'))
+        """
         sc = self.scene
         rows = [
             ("sphere", f"{sc.sphere.name} (E {sc.sphere.E:.4g} Pa, nu {sc.sphere.nu:g}, "
@@ -392,11 +703,27 @@ class SceneResult:
         return rows
 
     def to_markdown(self) -> str:
+        """:meth:`table` as a markdown table (quantity, value, unit).
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> for line in r.to_markdown().splitlines()[:3]:
+        ...     print(line)
+        | quantity | value | unit |
+        |---|---|---|
+        | sphere | steel (E 2.1e+11 Pa, nu 0.3, rho 7850 kg/m^3) |  |
+        """
         lines = ["| quantity | value | unit |", "|---|---|---|"]
         lines += [f"| {a} | {b} | {c} |" for a, b, c in self.table()]
         return "\n".join(lines)
 
-    def __str__(self):
+    def __str__(self) -> str:
         rows = self.table()
         w = max(len(r[0]) for r in rows)
         return "\n".join(f"{a:<{w}}  {b} {c}".rstrip() for a, b, c in rows)

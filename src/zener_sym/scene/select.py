@@ -3,9 +3,23 @@ from __future__ import annotations
 
 import math
 import numbers
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Protocol
 
+from ..typing import RealLike
 from . import envelopes as _env
+
+if TYPE_CHECKING:  # annotations only: the models layer is imported where used
+    from ..models import Model
+
+
+class HasLambda(Protocol):
+    """A scene, as :func:`select_model` sees it: it carries its own lambda (scene.py imports
+    this module, so ``Scene`` is described here rather than imported)."""
+
+    @property
+    def lam(self) -> float: ...
 
 __all__ = ["Selection", "select_model", "QUANTITY_ALIASES", "ALL_QUANTITIES"]
 
@@ -22,6 +36,15 @@ ALL_QUANTITIES = ("tau_d", "F_m", "delta_m", "e", "xi", "impulse")
 @dataclass(frozen=True)
 class Selection:
     """The chosen model, why, and the envelope that decided it (None for the fallback).
+
+    Parameters
+    ----------
+    model : str
+        The chosen model, a name in ``zener_sym.MODELS``.
+    reason : str
+        Why it was chosen (or why the fallback), a sentence.
+    envelope : float or None
+        The measured error envelope that decided it; None for the fallback to "exact".
 
     Attributes
     ----------
@@ -42,23 +65,23 @@ class Selection:
     reason: str
     envelope: float | None = None
 
-    def __iter__(self):  # model, reason = select_model(...)
+    def __iter__(self) -> Iterator[str]:  # model, reason = select_model(...)
         return iter((self.model, self.reason))
 
 
-def _lambda_of(lam_or_scene) -> float:
+def _lambda_of(lam_or_scene: object) -> float:
     from ..params import as_lambda
 
     lam = getattr(lam_or_scene, "lam", None)  # a Scene carries its own lambda
     if lam is not None:
         return float(lam)
-    arr = as_lambda(lam_or_scene)
+    arr = as_lambda(lam_or_scene)  # type: ignore[arg-type]  # any object: validated there
     if arr.ndim != 0:
         raise ValueError("select_model takes one lambda (a scalar) or a Scene")
     return float(arr)
 
 
-def _quantities(quantity, table) -> tuple:
+def _quantities(quantity: object, table: Mapping[str, Any]) -> tuple[str, ...]:
     if not isinstance(quantity, str):
         raise ValueError(f"quantity must be a string, got {quantity!r}")
     if quantity == "all":
@@ -70,7 +93,8 @@ def _quantities(quantity, table) -> tuple:
     return (q,)
 
 
-def _envelope(entry, qs, idx, model=None):
+def _envelope(entry: Mapping[str, Any], qs: Sequence[str], idx: Sequence[int],
+              model: Model | None = None) -> tuple[float | None, str | None]:
     """(worst envelope over the quantities qs and the intervals idx, None) or (None, why not)."""
     worst = 0.0
     for q in qs:
@@ -84,8 +108,8 @@ def _envelope(entry, qs, idx, model=None):
     return worst, None
 
 
-def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=None
-                 ) -> Selection:
+def select_model(lam_or_scene: RealLike | HasLambda, quantity: str = "all", rtol: float = 1e-3,
+                 table: Mapping[str, Any] | None = None) -> Selection:
     """The cheapest registered model whose measured error envelope meets ``rtol``.
 
     Parameters
@@ -135,8 +159,9 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
     from ..models import REGISTRY
     from ..params import bound_text
 
-    if isinstance(rtol, bool) or not isinstance(rtol, numbers.Real) or not math.isfinite(rtol) \
-            or rtol <= 0:
+    rtol_in: object = rtol  # checked at run time, whatever a caller passed
+    if isinstance(rtol_in, bool) or not isinstance(rtol_in, numbers.Real) \
+            or not math.isfinite(rtol_in) or rtol <= 0:
         raise ValueError(f"rtol must be a finite number > 0, got {rtol!r}")
     table = _env.load() if table is None else table
     lam = _lambda_of(lam_or_scene)
@@ -144,9 +169,11 @@ def select_model(lam_or_scene, quantity: str = "all", rtol: float = 1e-3, table=
     what = "every reported quantity" if quantity == "all" else repr(quantity)
     accepting = [m for m in REGISTRY.values() if m.lam_bound is None or lam < m.lam_bound]
     if not accepting:
-        widest = max(REGISTRY.values(), key=lambda m: m.lam_bound)
+        # every model has a bound here (one without a bound accepts every lambda)
+        bounds = {m.name: m.lam_bound for m in REGISTRY.values() if m.lam_bound is not None}
+        widest = max(bounds, key=bounds.__getitem__)
         raise ValueError(f"lambda = {lam:.6g} is outside the range of every model; the widest "
-                         f"is {widest.name!r}: {bound_text(widest.lam_bound)}")
+                         f"is {widest!r}: {bound_text(bounds[widest])}")
     idx = [i for i, (lo, hi) in enumerate(table["intervals"]) if lo <= lam <= hi]
     if not idx:
         hi = table["intervals"][-1][1]

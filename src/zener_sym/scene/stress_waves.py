@@ -24,12 +24,14 @@ from __future__ import annotations
 
 import functools
 import math
+from typing import overload
 
 import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from ..models import formulas as fm
+from ..typing import FloatArray, RealArrayLike, RealLike
 from .materials import Material
 
 __all__ = ["PULSES", "radiation_constant", "stress_wave_k", "stress_wave_loss"]
@@ -44,7 +46,7 @@ _J = {
 PULSES = tuple(_J)
 
 
-def _D(s, k2):
+def _D(s: float, k2: float) -> float:
     return 4 * s * s * math.sqrt(s * s - k2) * math.sqrt(s * s - 1) - (2 * s * s - 1) ** 2
 
 
@@ -80,17 +82,17 @@ def radiation_constant(nu: float) -> tuple[float, float]:
     k2 = (1 - 2 * nu) / (2 * (1 - nu))   # (c2 / c1)^2
     ka = math.sqrt(k2)
 
-    def f1(s):  # both waves propagate (s < kappa): the outgoing branches make D real
+    def f1(s: float) -> float:  # both waves propagate (s < kappa): the outgoing branches make D real
         a, b = math.sqrt(max(k2 - s * s, 0.0)), math.sqrt(max(1 - s * s, 0.0))
         return s * a / ((2 * s * s - 1) ** 2 + 4 * s * s * a * b)
 
-    def f2(s):  # only the shear wave propagates (kappa < s < 1)
+    def f2(s: float) -> float:  # only the shear wave propagates (kappa < s < 1)
         a2, b = max(s * s - k2, 0.0), math.sqrt(max(1 - s * s, 0.0))
         return 4 * s**3 * a2 * b / ((2 * s * s - 1) ** 4 + 16 * s**4 * a2 * b * b)
 
-    i1 = quad(f1, 0.0, ka, epsabs=0.0, epsrel=1e-13, limit=200)[0]
-    i2 = quad(f2, ka, 1.0, epsabs=0.0, epsrel=1e-13, limit=200)[0]
-    sr = brentq(lambda s: _D(s, k2), 1.0 + 1e-15, 2.0, xtol=1e-16, rtol=4 * np.finfo(float).eps)
+    i1 = float(quad(f1, 0.0, ka, epsabs=0.0, epsrel=1e-13, limit=200)[0])
+    i2 = float(quad(f2, ka, 1.0, epsabs=0.0, epsrel=1e-13, limit=200)[0])
+    sr: float = brentq(lambda s: _D(s, k2), 1.0 + 1e-15, 2.0, xtol=1e-16, rtol=4 * np.finfo(float).eps)
     al, be = math.sqrt(sr * sr - k2), math.sqrt(sr * sr - 1)
     dD = 8 * sr * al * be + 4 * sr**3 * (be / al + al / be) - 8 * sr * (2 * sr * sr - 1)
     ir = math.pi * sr * al / dD
@@ -98,7 +100,7 @@ def radiation_constant(nu: float) -> tuple[float, float]:
     return h, ir / h
 
 
-def _check_pulse(pulse):
+def _check_pulse(pulse: str) -> None:
     if pulse not in _J:
         raise ValueError(f"unknown pulse {pulse!r}; allowed: {', '.join(PULSES)}")
 
@@ -137,19 +139,32 @@ def stress_wave_k(sphere: Material, plate: Material, pulse: str = "hunter") -> f
     es = 1.0 / ((1 - sphere.nu**2) / sphere.E + (1 - plate.nu**2) / plate.E)
     c2 = math.sqrt(plate.E / (2 * (1 + plate.nu) * plate.rho))
     h, _ = radiation_constant(float(plate.nu))
-    return (h * _J[pulse] / (math.pi * plate.rho * c2**3) * (4 * es / 3) ** 1.2
-            * (4 * math.pi * sphere.rho / 3) ** -0.2)
+    return float(h * _J[pulse] / (math.pi * plate.rho * c2**3) * (4 * es / 3) ** 1.2
+                 * (4 * math.pi * sphere.rho / 3) ** -0.2)
 
 
-def stress_wave_loss(sphere: Material, plate: Material, v0, pulse: str = "hunter"):
+@overload
+def stress_wave_loss(sphere: Material, plate: Material, v0: RealLike,
+                     pulse: str = "hunter") -> float: ...
+
+
+@overload
+def stress_wave_loss(sphere: Material, plate: Material, v0: RealArrayLike,
+                     pulse: str = "hunter") -> float | FloatArray: ...
+
+
+def stress_wave_loss(sphere: Material, plate: Material, v0: RealArrayLike,
+                     pulse: str = "hunter") -> float | FloatArray:
     """Hunter's/Reed's stress-wave loss xi = k V0^{3/5} at impact speeds v0 (m/s).
 
     Parameters
     ----------
     sphere, plate : Material
+        The sphere and the half-space (the plate, its flexure ignored).
     v0 : float or array_like
         Impact speeds in m/s, finite and >= 0.
     pulse : {"hunter", "reed", "hertz"}
+        The force pulse, as for :func:`stress_wave_k`.
 
     Returns
     -------
@@ -171,5 +186,5 @@ def stress_wave_loss(sphere: Material, plate: Material, v0, pulse: str = "hunter
     v = np.asarray(v0, dtype=float)
     if not np.all(np.isfinite(v)) or np.any(v < 0):
         raise ValueError(f"v0 must be finite and >= 0 (m/s), got {v0!r}")
-    xi = stress_wave_k(sphere, plate, pulse) * v**0.6
+    xi: FloatArray = stress_wave_k(sphere, plate, pulse) * v**0.6
     return float(xi) if xi.ndim == 0 else xi

@@ -35,7 +35,7 @@ _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?inf|n
                      re.IGNORECASE)
 
 
-def parse_quantity(text, kind: str, field: str | None = None) -> float:
+def parse_quantity(text: str | float, kind: str, field: str | None = None) -> float:
     """The value of ``text`` (number and optional unit of ``kind``) in SI units.
 
     Parameters
@@ -88,7 +88,7 @@ def parse_quantity(text, kind: str, field: str | None = None) -> float:
     return value * factor
 
 
-def si_value(value, kind: str, field: str, *, positive: bool = True) -> float:
+def si_value(value: float | str, kind: str, field: str, *, positive: bool = True) -> float:
     """``value`` (a number in SI units or a string with a unit) in SI, checked.
 
     Parameters

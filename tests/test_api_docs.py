@@ -31,7 +31,8 @@ from numpydoc.docscrape import ClassDoc, FunctionDoc, NumpyDocString
 
 #: Modules whose public objects are the documented API (the coordinator adds zener_sym.plot,
 #: zener_sym.plot.style and the generated kernels here).
-MODULES = ["zener_sym", "zener_sym.scene.lookup"]
+MODULES = ["zener_sym", "zener_sym.scene.lookup", "zener_sym.plot", "zener_sym.plot.style",
+           "zener_sym.plot.curves", "zener_sym.plot.calibration"]
 
 OPTIONFLAGS = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
 
@@ -165,7 +166,7 @@ def run_examples(name: str, obj: object) -> tuple[int, str]:
     module = inspect.getmodule(target)
     tests = finder.find(obj, name, module=module, globs={"__name__": "__main__"})
     out = io.StringIO()
-    runner = doctest.DocTestRunner(optionflags=OPTIONFLAGS)
+    runner = doctest.DocTestRunner(verbose=False, optionflags=OPTIONFLAGS)  # not -v from sys.argv
     attempted = 0
     for test in tests:
         if test.name != name:  # recurse=False still lists nothing else, but be sure

@@ -13,8 +13,10 @@ from pathlib import Path
 SECTIONS = {
     "Dimensionless core": (
         "Zener's equation (10) in the paper's notation: a summary of one impact, its history, "
-        "and the errors a model may raise.",
-        ["summary", "history", "Summary", "History", "MODELS", "FieldUnavailableError"]),
+        "the inverse (the lambda giving a restitution, a loss or a contact time) and the errors "
+        "a model may raise.",
+        ["summary", "history", "lam_for", "Summary", "History", "MODELS",
+         "FieldUnavailableError"]),
     "Models side by side": (
         "Every model against the exact solution, and the cheapest model that meets an accuracy.",
         ["compare", "Comparison", "select_model", "Selection"]),
@@ -23,8 +25,11 @@ SECTIONS = {
         ["Scene", "SceneResult", "Material", "ZenerWarning", "STEEL", "GLASS", "ALUMINIUM",
          "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS"]),
     "Viscoelastic grains": (
-        "The grain reading of Zener's equation (DEM codes).",
-        ["viscoelastic_lambda", "grain_impact", "GrainImpact", "fit_dissipation"]),
+        "The grain reading of Zener's equation (DEM codes): lambda of a grain pair, the "
+        "dissipative constant or plate thickness that gives a restitution, and the dissipative "
+        "constant fitted to measured restitution data.",
+        ["viscoelastic_lambda", "grain_impact", "GrainImpact", "dissipation_for",
+         "thickness_for", "fit_dissipation", "DissipationFit"]),
     "Stress waves": (
         "Hunter's and Reed's stress-wave loss of a sphere on an elastic half-space.",
         ["stress_wave_k", "stress_wave_loss"]),

@@ -56,6 +56,16 @@ def eval_budget(lam: float) -> int:
     DOP853 at rtol 1e-13 needs about 2000 + 2000 lambda; the budget is a few times that, so a
     slow combination of options (RK23 at the smallest rtol at lambda = 1000) ends in seconds
     with an error instead of running for hours.
+
+    Parameters
+    ----------
+    lam : float
+        lambda of the solve (Eq. 11).
+
+    Returns
+    -------
+    int
+        The budget.
     """
     return int(500_000 + 2500 * lam)
 
@@ -188,11 +198,33 @@ class Form:
         return f
 
     def atol(self, atol: float) -> FloatArray:
-        """Absolute tolerance per state: ``atol``, none (1e-300) for ``FREE_STATES``."""
+        """Absolute tolerance per state: ``atol``, none (1e-300) for ``FREE_STATES``.
+
+        Parameters
+        ----------
+        atol : float
+            The solve's absolute tolerance.
+
+        Returns
+        -------
+        ndarray
+            One tolerance per state.
+        """
         return np.array([1e-300 if s in FREE_STATES else atol for s in self.states])
 
     def pack(self, values: Mapping[str, float]) -> list[float]:
-        """The initial state from named values (``Leg.values``) and ``derived``."""
+        """The initial state from named values (``Leg.values``) and ``derived``.
+
+        Parameters
+        ----------
+        values : mapping of str to float
+            Named values where the previous phase ended.
+
+        Returns
+        -------
+        list of float
+            The state in ``states`` order.
+        """
         return [values[s] if s in values else self.derived[s](values) for s in self.states]
 
     @property
@@ -215,7 +247,19 @@ class Leg:
     ended_by: str | None
 
     def values(self, x: float, y: FloatArray) -> Values:
-        """Named values at one point: the states, x ("u" or "tau"), δ and v."""
+        """Named values at one point: the states, x ("u" or "tau"), δ and v.
+
+        Parameters
+        ----------
+        x : float
+            The independent variable.
+        y : ndarray
+            The state there.
+
+        Returns
+        -------
+        dict of str to float
+        """
         xf = float(x)
         out: Values = dict(zip(self.form.states, y))
         out[self.form.kind] = xf
@@ -227,7 +271,18 @@ class Leg:
         return out
 
     def hit(self, name: str) -> Values | None:
-        """``values`` at the first occurrence of the event ``name`` (None if it did not fire)."""
+        """``values`` at the first occurrence of the event ``name``.
+
+        Parameters
+        ----------
+        name : str
+            The event's name.
+
+        Returns
+        -------
+        dict of str to float or None
+            None if the event did not fire.
+        """
         found = self.hits.get(name, [])
         return self.values(*found[0]) if len(found) else None
 
@@ -246,7 +301,18 @@ class Leg:
         return float(self.y[0, 0] if self.form.kind == "u" else self.x[0])
 
     def delta_w(self, tau: FloatArray) -> tuple[FloatArray, FloatArray]:
-        """(δ, w) at the times ``tau`` inside this leg (a u-leg inverts τ(u) by Newton)."""
+        """(δ, w) at the times ``tau`` inside this leg (a u-leg inverts τ(u) by Newton).
+
+        Parameters
+        ----------
+        tau : ndarray
+            Times inside the leg.
+
+        Returns
+        -------
+        tuple of ndarray
+            δ and w = 1 − Ī, tau's shape.
+        """
         if self.form.kind == "tau":
             y = self.sol(tau)
             return y[0], y[self.form.w_row]
@@ -335,7 +401,17 @@ class Contact:
     events: Mapping[str, Sequence[Event]] = field(default_factory=dict)
 
     def extra(self, phase: str) -> tuple[Event, ...]:
-        """The extra events of ``phase`` ("loading", "middle", "unloading")."""
+        """The extra events of a phase.
+
+        Parameters
+        ----------
+        phase : str
+            "loading", "middle" or "unloading".
+
+        Returns
+        -------
+        tuple of Event
+        """
         return tuple(self.events.get(phase, ()))
 
 

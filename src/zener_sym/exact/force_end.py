@@ -39,14 +39,17 @@ Two independent paths, as for the plate:
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import mpmath
 import numpy as np
 
 from .. import params
+from ..typing import FloatArray, RealArrayLike, RealLike
 from . import mp, solver
-from .phases import Contact, Event, Form, Settings, integrate, positive
+from .phases import Contact, Event, Form, Leg, Settings, Terms, Value, integrate, positive
 from .solver import ContactTimes, ExactSolution, check_options, restitution
 
 __all__ = ["CONTACT_ENDS", "check_contact_end", "ForceEndSolution", "grain_contact", "solve", "solve_mp"]
@@ -55,8 +58,24 @@ __all__ = ["CONTACT_ENDS", "check_contact_end", "ForceEndSolution", "grain_conta
 CONTACT_ENDS = ("delta", "force")
 
 
-def check_contact_end(contact_end) -> str:
-    """Validate the end-of-contact criterion: ``"delta"`` (plate, delta = 0) or ``"force"`` (grains)."""
+def check_contact_end(contact_end: object) -> str:
+    """Validate the end-of-contact criterion: ``"delta"`` (plate, delta = 0) or ``"force"`` (grains).
+
+    Parameters
+    ----------
+    contact_end : str
+        One of ``CONTACT_ENDS``.
+
+    Returns
+    -------
+    str
+        contact_end.
+
+    Raises
+    ------
+    ValueError
+        For any other value, naming the allowed ones.
+    """
     if not isinstance(contact_end, str) or contact_end not in CONTACT_ENDS:
         raise ValueError(f"unknown contact_end {contact_end!r}; allowed: 'delta' (the plate: contact "
                          f"ends at delta = 0) or 'force' (viscoelastic grains: contact ends where "
@@ -73,45 +92,66 @@ class ForceEndSolution(ContactTimes):
     tau_d, used for the dense history of delta and w = 1 - int delta^{3/2}.
     """
 
-    lam: float
-    delta_m: float
-    tau_dc: float
-    tau_d: float
-    v_end: float
-    int_F2: float
-    F_m: float
-    xi: float
-    _base: object = None
+    # float from solve (scipy), mpmath.mpf from solve_mp
+    lam: Any
+    delta_m: Any
+    tau_dc: Any
+    tau_d: Any
+    v_end: Any
+    int_F2: Any
+    F_m: Any
+    xi: Any
+    _base: ExactSolution | mp.MpSolution | None = None
 
     @property
-    def e(self):
+    def e(self) -> Any:
+        """Coefficient of restitution e = -delta'(tau_d)."""
         return -self.v_end
 
     @property
-    def impulse(self):
+    def impulse(self) -> Any:
+        """int F_c dtau over the contact, 1 - delta'(tau_d) = 1 + e."""
         return 1 - self.v_end
 
-    def history(self, tau) -> dict:
-        """delta, velocity delta', force F_c and impulse 1 - delta' at ``tau`` (>= 0), float arrays."""
-        tau = params.as_tau(tau)
+    def history(self, tau: RealArrayLike) -> dict[str, FloatArray]:
+        """delta, velocity delta', force F_c and impulse 1 - delta' at ``tau``, float arrays.
+
+        Parameters
+        ----------
+        tau : array_like
+            Times, finite and >= 0.
+
+        Returns
+        -------
+        dict of str to ndarray
+            "tau", "delta", "velocity", "force", "impulse", each of tau's shape.
+
+        Raises
+        ------
+        ValueError
+            For a negative or non-finite time.
+        """
+        t: FloatArray = params.as_tau(tau)
         tau_d = float(self.tau_d)
-        h = self._base.history(np.minimum(tau, np.nextafter(tau_d, 0.0)))
+        if self._base is None:
+            raise RuntimeError("ForceEndSolution: no dense solution to read the history from")
+        h = self._base.history(np.minimum(t, np.nextafter(tau_d, 0.0)))
         lam = float(self.lam)
         d = np.maximum(np.asarray(h["delta"], dtype=float), 0.0)
         v = np.asarray(h["velocity"], dtype=float) - lam * d**1.5  # w - lambda delta^{3/2}
         fc = np.sqrt(d) * (d + 1.5 * lam * v)
-        after = tau >= tau_d
+        after = t >= tau_d
         d, v, fc = np.where(after, 0.0, d), np.where(after, float(self.v_end), v), np.where(after, 0.0, fc)
-        return {"tau": tau, "delta": d, "velocity": v, "force": fc, "impulse": 1.0 - v}
+        return {"tau": t, "delta": d, "velocity": v, "force": fc, "impulse": 1.0 - v}
 
 
 # --- scipy path ------------------------------------------------------------------------------
 
-def _u_terms(lam):
+def _u_terms(lam: float) -> Terms:
     """u-form with J = int F_c^2 and D = int sqrt(delta) delta'^2: dtau/du = 2u/v,
     dw/du = -2u^4/v, dJ/du = 2u F_c^2/v, dD/du = 2u^2 v."""
 
-    def f(u, y):
+    def f(u: float, y: FloatArray) -> tuple[Value, ...]:
         v = y[1] - lam * u**3
         if abs(v) < 1e-300:
             v = 1e-300 if v >= 0 else -1e-300
@@ -122,7 +162,7 @@ def _u_terms(lam):
     return f
 
 
-def _tau_terms(lam):
+def _tau_terms(lam: float) -> Terms:
     """Middle phase in tau, state (delta, v, g, w, J, D): v = delta' and g = delta + (3/2) lam v
     (F_c = sqrt(delta) g) carried as their own states,
 
@@ -137,7 +177,7 @@ def _tau_terms(lam):
     fed in from v (rate (3/2) lam sqrt(delta))."""
     k = 1.5 * lam
 
-    def f(t, y):
+    def f(t: float, y: FloatArray) -> tuple[Value, ...]:
         d = positive(y[0])
         s = np.sqrt(d)
         v, g = y[1], y[2]
@@ -148,27 +188,44 @@ def _tau_terms(lam):
 
 
 def grain_contact(lam: float) -> Contact:
-    """The grains' contact for the phase driver (lam > 0): the plate's phases with the extra
-    states J = int F_c^2 and D = int sqrt(delta) delta'^2, one middle form (delta, v, g, w, J, D)
-    through the end of compression, the peak of F_c watched in loading and middle, and the
-    force-free end as a terminal event in the middle and in unloading."""
+    """The grains' contact for the phase driver.
+
+    The plate's phases with the extra states J = int F_c^2 and D = int sqrt(delta) delta'^2,
+    one middle form (delta, v, g, w, J, D) through the end of compression, the peak of F_c
+    watched in loading and middle, and the force-free end as a terminal event in the middle and
+    in unloading.
+
+    Parameters
+    ----------
+    lam : float
+        lambda (Eq. 11), > 0.
+
+    Returns
+    -------
+    Contact
+    """
     k = 1.5 * lam
 
-    def velocity_u(u, y):
-        return y[1] - lam * u**3
+    def velocity_u(u: float, y: FloatArray) -> Value:
+        v: Value = y[1] - lam * u**3
+        return v
 
-    def peak_u(u, y):  # proportional to dF_c/du; F_c = u^3 + k u v
+    def peak_u(u: float, y: FloatArray) -> Value:  # proportional to dF_c/du; F_c = u^3 + k u v
         v = y[1] - lam * u**3
         dv = -2.0 * u**4 / v - 3.0 * lam * u**2
-        return 3.0 * u**2 + k * (v + u * dv)
+        g: Value = 3.0 * u**2 + k * (v + u * dv)
+        return g
 
-    def peak_t(t, y):  # proportional to dF_c/dtau: 2 delta v + lam v^2 - 2 lam delta F_c
+    def peak_t(t: float, y: FloatArray) -> Value:
+        # proportional to dF_c/dtau: 2 delta v + lam v^2 - 2 lam delta F_c
         d = max(y[0], 0.0)
         v = y[1]
-        return 2.0 * d * v + lam * v * v - 2.0 * lam * d * np.sqrt(d) * y[2]
+        g: Value = 2.0 * d * v + lam * v * v - 2.0 * lam * d * np.sqrt(d) * y[2]
+        return g
 
-    def free_u(u, y):
-        return u * u + k * (y[1] - lam * u**3)
+    def free_u(u: float, y: FloatArray) -> Value:
+        g: Value = u * u + k * (y[1] - lam * u**3)
+        return g
 
     u_form = Form("u", ("tau", "w", "J", "D"), _u_terms(lam), velocity_u, lam)
     # g = delta + (3/2) lam v = 0 is the force-free end; v and g get no absolute tolerance
@@ -183,12 +240,13 @@ def grain_contact(lam: float) -> Contact:
 _FREE = "force-free end"
 
 
-def _peak(legs, lam) -> float:
+def _peak(legs: tuple[Leg, ...], lam: float) -> float:
     """F_m from the first peak event: in loading (F_c = u^3 + k u v) or else in the middle."""
     hit = legs[0].hit("peak")
     if hit is not None:
         up = float(hit["u"])
-        return up**3 + 1.5 * lam * up * (hit["w"] - lam * up**3)
+        F_m: float = up**3 + 1.5 * lam * up * (hit["w"] - lam * up**3)
+        return F_m
     hit = legs[1].hit("peak")
     if hit is None:
         raise RuntimeError(f"exact (force end): no peak of the force found at lambda = {lam}")
@@ -196,13 +254,33 @@ def _peak(legs, lam) -> float:
 
 
 def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "DOP853") -> ForceEndSolution:
-    """Integrate Eq. (10) for one lambda (0 <= lam <= LAMBDA_MAX, validated by the caller) to the
-    force-free end.
+    """Integrate Eq. (10) for one lambda to the force-free end (scipy path).
 
     Options as in :func:`zener_sym.exact.solver.solve` (checked here before any work, with the
     same evaluation budget, so no option makes a call hang); the default tolerance is ten times
     tighter than the plate's. Measured against :func:`solve_mp` (``tests/test_viscoelastic.py``):
     every summary field within 5e-14 relative for 0 <= lambda <= 1000 with these defaults.
+
+    Parameters
+    ----------
+    lam : float
+        lambda (Eq. 11), 0 <= lam <= LAMBDA_MAX (validated by the caller).
+    rtol, atol : float
+        Tolerances (``solver.check_options``).
+    method : str
+        Method of ``solve_ivp``, one of ``solver.METHODS``.
+
+    Returns
+    -------
+    ForceEndSolution
+        Fields as floats.
+
+    Raises
+    ------
+    ValueError
+        For a bad option.
+    RuntimeError
+        When a phase fails or the evaluation budget is spent.
     """
     rtol, atol, method = check_options(rtol, atol, method)
     lam = float(lam)
@@ -212,6 +290,8 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
                                 v_end=s.w_end, int_F2=s.int_F2, F_m=s.F_m, xi=0.0, _base=s)
     legs = integrate(grain_contact(lam), Settings(lam, rtol, atol, method, "exact (force end)"))
     dc = legs[1].hit("end of compression")
+    if dc is None:  # phases.integrate refuses a middle without it
+        raise RuntimeError(f"exact (force end): no end of compression at lambda = {lam}")
     tau_dc, delta_m = float(dc["tau"]), float(dc["delta"])
     end = legs[-1].end  # the force-free end, in the middle (large lambda) or in unloading
     tau_d, w, J, D = float(end["tau"]), float(end["w"]), float(end["J"]), end["D"]
@@ -225,11 +305,11 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
 
 # --- mpmath path -----------------------------------------------------------------------------
 
-def _deriv(c):
+def _deriv(c: Sequence[Any]) -> list[Any]:
     return [k * c[k] for k in range(1, len(c))]
 
 
-def _mul(a, b):
+def _mul(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
     out = [mpmath.mpf(0)] * (len(a) + len(b) - 1)
     for i, x in enumerate(a):
         if x:
@@ -238,12 +318,12 @@ def _mul(a, b):
     return out
 
 
-def _integral(c, s):
+def _integral(c: Sequence[Any], s: Any) -> Any:
     """int_0^s sum c_k x^k dx."""
     return mpmath.fsum(ck * s ** (k + 1) / (k + 1) for k, ck in enumerate(c))
 
 
-def _fc_poly(ph, st, lam):
+def _fc_poly(ph: Any, st: Any, lam: Any) -> tuple[list[Any], list[Any]]:
     """F_c on one Taylor step as a polynomial in s, and dtau/ds (1 on tau steps)."""
     if ph.kind == "tau":  # F_c = -v'
         return [-x for x in _deriv(st.c[1])], [mpmath.mpf(1)]
@@ -254,7 +334,7 @@ def _fc_poly(ph, st, lam):
     return fc, _deriv(st.c[0])
 
 
-def _root_in(poly, h):
+def _root_in(poly: Sequence[Any], h: Any) -> Any:
     """Root of poly in [0, h] (a sign change between the ends) by bisection-safeguarded Newton."""
     dp = _deriv(poly)
     a, b = mpmath.mpf(0), h
@@ -276,9 +356,29 @@ def _root_in(poly, h):
     raise RuntimeError("exact (force end, mpmath): root search did not converge")
 
 
-def solve_mp(lam, dps: int = 30) -> ForceEndSolution:
-    """High-precision force-free end (mpmath); fields are mpf. Same arguments as
-    :func:`zener_sym.exact.mp.solve`, which validates them."""
+def solve_mp(lam: RealLike, dps: int = 30) -> ForceEndSolution:
+    """High-precision force-free end (mpmath): the plate's Taylor solution cut where F_c = 0.
+
+    Parameters
+    ----------
+    lam : float
+        lambda (Eq. 11), 0 <= lam <= LAMBDA_MAX.
+    dps : int
+        Decimal digits, DPS_MIN <= dps <= DPS_MAX (:func:`zener_sym.exact.mp.solve`, which
+        validates both).
+
+    Returns
+    -------
+    ForceEndSolution
+        Fields as mpf.
+
+    Raises
+    ------
+    ValueError
+        For a bad lambda or dps.
+    RuntimeError
+        If no force-free point is found (a bug).
+    """
     sol = mp.solve(lam, dps=dps)
     with mpmath.workdps(sol.dps + mp.GUARD_WORK):
         L = sol.lam

@@ -13,11 +13,15 @@ from __future__ import annotations
 
 import functools
 import importlib
+from collections.abc import Mapping, Sequence
+from typing import Any, TypedDict
 
 import numpy as np
+import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
 from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
+from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
 from .force_table_layout import ForceLayout, piece_variable, recovery_z_end
 from .table_layout import parse_array
@@ -33,8 +37,27 @@ SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
 HISTORY_ATOL = 1e-10
 
+#: Lambda-piece indices and row indices.
+_Index = npt.NDArray[np.intp]
+#: One time piece's history layout (``_history_layout``): [lambda piece, time degree, lambda
+#: degree, 2 * sub-piece + field] monomial coefficients, the sub-piece count and the degree.
+_PieceLayout = tuple[FloatArray, int, int]
 
-def _pad(mats) -> np.ndarray:
+
+class _Tables(TypedDict):
+    """The generated table, arranged for evaluation (``_tables``)."""
+
+    layout: ForceLayout
+    edges: FloatArray
+    log: npt.NDArray[np.bool_]
+    ga: FloatArray
+    gb: FloatArray
+    summary: FloatArray
+    dsummary: FloatArray
+    history: dict[str, _PieceLayout]
+
+
+def _pad(mats: Sequence[Sequence[Sequence[float]]]) -> FloatArray:
     """One zero-padded array [lambda piece, field, degree] from per-piece coefficient tuples."""
     n_f = len(mats[0])
     deg = max(len(c) for m in mats for c in m)
@@ -45,7 +68,7 @@ def _pad(mats) -> np.ndarray:
     return out
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> float:
     if name in _RANGE:
         edges = _tables()["edges"]
         return float(edges[0] if name == "LAM_MIN" else edges[-1])
@@ -53,7 +76,7 @@ def __getattr__(name):
 
 
 @functools.cache
-def _tables():
+def _tables() -> _Tables:
     """The generated table, loaded on first use; its layout is read from it."""
     t = importlib.import_module("zener_sym.generated.exact_force_table")
     lay = ForceLayout.of(t)
@@ -62,12 +85,14 @@ def _tables():
     summary = _pad([[t.SUMMARY[k][p] for k in lay.SUMMARY_KEYS] for p in range(len(log))])
     return {"layout": lay, "edges": edges, "log": log, "ga": piece_variable(edges[:-1], log),
             "gb": piece_variable(edges[1:], log), "summary": summary,
-            "dsummary": np.polynomial.chebyshev.chebder(summary, axis=2),
+            # numpy's stubs type chebder's result as any floating array; it is float64 (no copy)
+            "dsummary": np.asarray(np.polynomial.chebyshev.chebder(summary, axis=2), dtype=float),
             "history": {piece: _history_layout(t.HISTORY, lay, piece, len(log))
                         for piece in lay.TIME_PIECES}}
 
 
-def _history_layout(history, lay, piece, n_lam):
+def _history_layout(history: Mapping[tuple[str, str], Any], lay: ForceLayout, piece: str,
+                    n_lam: int) -> _PieceLayout:
     """Per lambda piece, [time degree, lambda degree, 2 * sub-piece + field] (field 0: f,
     1: v), the time direction converted to monomials in the sub-piece's x (Horner's rule, as
     the plate's ``table._history_layout``), so the lambda contraction gives per line the pairs
@@ -88,14 +113,26 @@ def _history_layout(history, lay, piece, n_lam):
     return per, n_sub, deg
 
 
-def in_range(lam) -> np.ndarray:
-    """Boolean mask: lambda inside the tables' range [LAM_MIN, LAM_MAX]."""
-    lam = np.asarray(lam, dtype=float)
+def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+    """Boolean mask: lambda inside the tables' range [LAM_MIN, LAM_MAX].
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11).
+
+    Returns
+    -------
+    ndarray of bool
+        lam's shape.
+    """
+    lam_a = np.asarray(lam, dtype=float)
     edges = _tables()["edges"]
-    return (lam >= edges[0]) & (lam <= edges[-1])
+    inside: npt.NDArray[np.bool_] = (lam_a >= edges[0]) & (lam_a <= edges[-1])
+    return inside
 
 
-def _piece(lam: np.ndarray):
+def _piece(lam: FloatArray) -> tuple[_Index, FloatArray]:
     """Lambda piece index and the local Chebyshev variable x in [-1, 1]."""
     if not np.all(in_range(lam)):
         bad = float(lam[~in_range(lam)].ravel()[0])
@@ -112,16 +149,17 @@ def _piece(lam: np.ndarray):
     return i, np.clip((2.0 * g - a - b) / (b - a), -1.0, 1.0)
 
 
-def _sum(tl, ci):
+def _sum(tl: npt.NDArray[np.floating[Any]], ci: FloatArray) -> FloatArray:
     """sum_k tl[:, k] ci[:, :, k] in a fixed order (each lambda's value independent of the
     others evaluated with it)."""
-    vals = tl[:, :1] * ci[:, :, 0]
+    vals: FloatArray = tl[:, :1] * ci[:, :, 0]
     for k in range(1, min(tl.shape[1], ci.shape[2])):
         vals += tl[:, k:k + 1] * ci[:, :, k]
     return vals
 
 
-def _core(lam: np.ndarray) -> dict:
+def _core(lam: FloatArray) -> tuple[dict[str, FloatArray], _Index, FloatArray,
+                                    npt.NDArray[np.floating[Any]]]:
     i, x = _piece(lam)
     c = _tables()["summary"]
     tl = np.polynomial.chebyshev.chebvander(x, c.shape[2] - 1)
@@ -132,23 +170,40 @@ def _core(lam: np.ndarray) -> dict:
     return v, i, x, tl
 
 
-def summary(lam) -> dict:
-    """Every summary field of the force-free end (``models.SUMMARY_FIELDS``) for lambda in
-    [LAM_MIN, LAM_MAX]; xi from the solver's energy balance (never 1 - e^2), exactly 0 at
-    lambda = 0; e = sqrt(1 - xi) while xi < 1/2 (``solver.restitution``)."""
-    lam = np.asarray(lam, dtype=float)
-    shape = lam.shape
-    lam = lam.reshape(-1)
-    v, _, _, _ = _core(lam)
+def summary(lam: RealArrayLike) -> dict[str, FloatArray]:
+    """Every summary field of the force-free end (``models.SUMMARY_FIELDS``).
+
+    xi from the solver's energy balance (never 1 - e^2), exactly 0 at lambda = 0;
+    e = sqrt(1 - xi) while xi < 1/2 (``solver.restitution``).
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11) in [LAM_MIN, LAM_MAX].
+
+    Returns
+    -------
+    dict of str to ndarray
+        "lam" and the summary fields, each of lam's shape.
+
+    Raises
+    ------
+    ValueError
+        For lambda outside the tables' range.
+    """
+    lam_a = np.asarray(lam, dtype=float)
+    shape = lam_a.shape
+    lam1 = lam_a.reshape(-1)
+    v, _, _, _ = _core(lam1)
     tau_dr = v["tau_d"] - v["tau_dc"]
-    out = {"lam": lam, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
+    out = {"lam": lam1, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
            "tau_dr": tau_dr, "eta": tau_dr / v["tau_dc"], "e": v["e"],
            "F_m": np.exp(v["log_F_m"]), "impulse": 1.0 + v["e"],
            "int_F2": np.exp(v["log_int_F2"]), "xi": v["xi"]}
     return {k: a.reshape(shape) for k, a in out.items()}
 
 
-def _dscale(lam, i):
+def _dscale(lam: FloatArray, i: _Index) -> FloatArray:
     """dx/dlambda of each lambda's piece variable x: 2 / ((b - a) lambda) on ln-lambda pieces,
     2 / ((b - a) 2 sqrt(lambda)) on sqrt pieces (infinite at lambda = 0)."""
     t = _tables()
@@ -163,34 +218,53 @@ DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", 
                      "int_F2", "xi")
 
 
-def summary_derivative(lam, field: str = "e") -> np.ndarray:
-    """d(field)/d(lambda) of the tabulated force-end summary from the series' own derivative
-    (``table.summary_derivative`` documents the contract). lambda must be > 0: near 0 the
-    fields have lambda^(3/2) terms and the tables' variable is sqrt(lambda)."""
+def summary_derivative(lam: RealArrayLike, field: str = "e") -> FloatArray:
+    """d(field)/d(lambda) of the tabulated force-end summary from the series' own derivative.
+
+    ``table.summary_derivative`` documents the contract. lambda must be > 0: near 0 the fields
+    have lambda^(3/2) terms and the tables' variable is sqrt(lambda).
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11) in (0, LAM_MAX].
+    field : str
+        One of ``DERIVATIVE_FIELDS``.
+
+    Returns
+    -------
+    ndarray
+        d(field)/d(lambda), lam's shape.
+
+    Raises
+    ------
+    ValueError
+        For an unknown field, lambda = 0, or lambda outside the range or not finite.
+    """
     if not isinstance(field, str) or field not in DERIVATIVE_FIELDS:
         raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
                          f"{', '.join(DERIVATIVE_FIELDS)}")
     lam_in = np.asarray(lam, dtype=float)
-    lam = lam_in.reshape(-1)
-    if not np.all(np.isfinite(lam)):
+    lam1 = lam_in.reshape(-1)
+    if not np.all(np.isfinite(lam1)):
         raise ValueError("lambda must be finite")
-    if np.any(lam == 0.0):
+    if np.any(lam1 == 0.0):
         raise ValueError("d/dlambda at lambda = 0 is not available for contact_end='force': the "
                          "tables' variable is sqrt(lambda) (the fields have lambda^(3/2) terms, "
                          "so their second derivative is infinite there); ask at lambda > 0")
-    v, i, x, _ = _core(lam)
+    v, i, x, _ = _core(lam1)
     d = _tables()["dsummary"]
     tl = np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0))
     keys = _tables()["layout"].SUMMARY_KEYS
-    dv = {k: c * _dscale(lam, i) for k, c in zip(keys, _sum(tl, d[i]).T)}
-    dxi = v["xi_over_lam"] + lam * dv["xi_over_lam"]
+    dv = {k: c * _dscale(lam1, i) for k, c in zip(keys, _sum(tl, d[i]).T)}
+    dxi = v["xi_over_lam"] + lam1 * dv["xi_over_lam"]
     small = v["xi"] < 0.5
     de = np.where(small, -dxi / (2.0 * v["e"]), v["e"] * dv["log_e"])
     # where xi >= 1/2 the e route is the accurate one (xi' = -2 e e'), as the plate's
     dxi = np.where(small, dxi, -2.0 * v["e"] * de)
     tau_d = v["tau_d"]
     dtau_d = tau_d * dv["log_tau_d"]
-    out = {"e": de, "impulse": de, "xi": dxi, "tau_d": dtau_d, "delta_m": dv["delta_m"],
+    out: FloatArray = {"e": de, "impulse": de, "xi": dxi, "tau_d": dtau_d, "delta_m": dv["delta_m"],
            "tau_dc": dv["tau_dc"], "tau_dr": dtau_d - dv["tau_dc"],
            "eta": (dtau_d * v["tau_dc"] - tau_d * dv["tau_dc"]) / v["tau_dc"] ** 2,
            "F_m": np.exp(v["log_F_m"]) * dv["log_F_m"],
@@ -198,26 +272,44 @@ def summary_derivative(lam, field: str = "e") -> np.ndarray:
     return out.reshape(lam_in.shape)
 
 
-def log_quantity(lam, quantity: str):
-    """(ln q, d ln q / d lambda) for q = e (ln e's series), xi (lambda > 0) or tau_d, for
-    :mod:`zener_sym.exact.inverse`."""
-    lam = np.asarray(lam, dtype=float).reshape(-1)
+def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
+    """(ln q, d ln q / d lambda) from the one series q needs, for :mod:`zener_sym.exact.inverse`.
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11) in [LAM_MIN, LAM_MAX] (> 0 for xi); flattened.
+    quantity : str
+        "e" (ln e's series), "xi" or "tau_d".
+
+    Returns
+    -------
+    tuple of ndarray
+        ln q and d ln q / d lambda, 1-D.
+
+    Raises
+    ------
+    ValueError
+        For an unknown quantity or lambda outside the tables' range.
+    """
+    lam1 = np.asarray(lam, dtype=float).reshape(-1)
     key = {"e": "log_e", "tau_d": "log_tau_d", "xi": "xi_over_lam"}.get(quantity)
     if key is None:
         raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
     t = _tables()
     k = t["layout"].SUMMARY_KEYS.index(key)
-    i, x = _piece(lam)
+    i, x = _piece(lam1)
     c, d = t["summary"][:, k, :], t["dsummary"][:, k, :]
     tl = np.polynomial.chebyshev.chebvander(x, c.shape[1] - 1)
     val = np.einsum("nk,nk->n", tl, c[i])
-    der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i]) * _dscale(lam, i)
+    der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i]) * _dscale(lam1, i)
     if quantity == "xi":  # ln xi = ln lambda + ln(xi / lambda)
-        return np.log(lam) + np.log(val), 1.0 / lam + der / val
+        return np.log(lam1) + np.log(val), 1.0 / lam1 + der / val
     return val, der
 
 
-def _line_coefficients(per, ip, tl, deg, n_sub):
+def _line_coefficients(per: FloatArray, ip: _Index, tl: npt.NDArray[np.floating[Any]], deg: int,
+                       n_sub: int) -> npt.NDArray[np.complex128]:
     """[time degree, line * sub-piece] complex: the time piece's monomial coefficients per line
     (real part f's, imaginary part v's), contracted in lambda."""
     out = np.zeros((deg, len(ip), 2 * n_sub))
@@ -228,22 +320,36 @@ def _line_coefficients(per, ip, tl, deg, n_sub):
     return out.reshape(deg, -1).view(np.complex128)
 
 
-def history(lam, tau) -> dict:
-    """delta, velocity (delta'), force (F_c = sqrt(delta) (delta + (3/2) lambda delta')) and
-    impulse (1 - delta') at (lam, tau), of one broadcast shape; lambda in [LAM_MIN, LAM_MAX],
-    tau >= 0. Past tau_d: delta and the force 0, the velocity -e, the impulse 1 + e (as
-    ``force_end.ForceEndSolution.history``)."""
-    lam = np.asarray(lam, dtype=float)
-    tau = np.asarray(tau, dtype=float)
-    lam, tau = np.broadcast_arrays(lam, tau)
-    shape = tau.shape
-    if lam.ndim >= 1 and lam.shape[-1] > 1 and lam.strides[-1] == 0:
+def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
+    """delta, velocity delta', force F_c and impulse 1 - delta' of the force-free end's history.
+
+    F_c = sqrt(delta) (delta + (3/2) lambda delta'). Past tau_d: delta and the force 0, the
+    velocity -e, the impulse 1 + e (as ``force_end.ForceEndSolution.history``).
+
+    Parameters
+    ----------
+    lam, tau : array_like
+        lambda (Eq. 11) in [LAM_MIN, LAM_MAX] and times >= 0, broadcast together.
+
+    Returns
+    -------
+    dict of str to ndarray
+        "delta", "velocity", "force", "impulse", each of the broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        For lambda outside the tables' range.
+    """
+    lam_b, tau_b = np.broadcast_arrays(np.asarray(lam, dtype=float), np.asarray(tau, dtype=float))
+    shape = tau_b.shape
+    if lam_b.ndim >= 1 and lam_b.shape[-1] > 1 and lam_b.strides[-1] == 0:
         # one lambda per line of tau (a broadcast column): sort the lines, not every point
-        lu, line = np.unique(lam[..., 0].ravel(), return_inverse=True)
-        inv = np.repeat(line, lam.shape[-1])
+        lu, line = np.unique(lam_b[..., 0].ravel(), return_inverse=True)
+        inv = np.repeat(line, lam_b.shape[-1])
     else:
-        lu, inv = np.unique(lam.ravel(), return_inverse=True)
-    tau = tau.ravel()
+        lu, inv = np.unique(lam_b.ravel(), return_inverse=True)
+    tau = tau_b.ravel()
     v, ip, _, tl = _core(lu)
     log = _tables()["log"][ip]
     tau_dc, tau_d = v["tau_dc"], v["tau_d"]
@@ -256,7 +362,7 @@ def history(lam, tau) -> dict:
         r_b = np.where(log, 0.0, 1.0 / (tau_p - tau_dc))
         c_a = 1.0 / tau_dc
     tables = _tables()["history"]
-    coef = {}
+    coef: dict[str, tuple[npt.NDArray[np.complex128], int]] = {}
     for name in _tables()["layout"].TIME_PIECES:
         per, n_sub, deg = tables[name]
         coef[name] = (_line_coefficients(per, ip, tl, deg, n_sub), n_sub)

@@ -36,12 +36,15 @@ rebuilds and compares numerically (``CHECK_RTOL``), as for the plate's.
 from __future__ import annotations
 
 import pathlib
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
 from ..codegen import inputs_hash
 from ..codegen.tables import table_module
 from ..numerics.chebyshev import cheb_coefficients, cheb_nodes, trim_trailing
+from ..typing import FloatArray
 from . import table_build as _tb
 from .force_table_layout import ForceLayout, piece_variable, time_of
 
@@ -72,32 +75,78 @@ TIME_PIECES = LAYOUT.TIME_PIECES
 
 
 def is_log_piece(a: float) -> bool:
-    """True for a lambda piece [a, b] tabulated in ln(lambda) (else in sqrt(lambda))."""
+    """True for a lambda piece [a, b] tabulated in ln(lambda) (else in sqrt(lambda)).
+
+    Parameters
+    ----------
+    a : float
+        The piece's lower end.
+
+    Returns
+    -------
+    bool
+    """
     return a >= LOG_FROM
 
 
-def piece_nodes(a: float, b: float) -> np.ndarray:
-    """The lambda nodes of the piece [a, b]: Chebyshev points in its variable."""
+def piece_nodes(a: float, b: float) -> FloatArray:
+    """The lambda nodes of the piece [a, b]: Chebyshev points in its variable.
+
+    Parameters
+    ----------
+    a, b : float
+        The piece's ends.
+
+    Returns
+    -------
+    ndarray
+        N_LAM nodes.
+    """
     x = cheb_nodes(N_LAM)
     ga, gb = (float(piece_variable(v, is_log_piece(a))) for v in (a, b))
     g = ga + (gb - ga) * (x + 1.0) / 2.0
-    return np.exp(g) if is_log_piece(a) else g * g
+    nodes: FloatArray = np.exp(g) if is_log_piece(a) else g * g
+    return nodes
 
 
-def sub_nodes(piece: str) -> np.ndarray:
-    """Reduced times y of the Chebyshev points of every sub-piece of a time piece, [sub, point]."""
+def sub_nodes(piece: str) -> FloatArray:
+    """Reduced times y of the Chebyshev points of every sub-piece of a time piece.
+
+    Parameters
+    ----------
+    piece : str
+        A key of ``N_SUB``.
+
+    Returns
+    -------
+    ndarray
+        [sub-piece, point].
+    """
     k, x = N_SUB[piece], cheb_nodes(N_TIME[piece])
     return (np.arange(k)[:, None] + (x[None, :] + 1.0) / 2.0) / k
 
 
-def node_data(lam: float, log_piece: bool) -> dict:
-    """Summary values and history samples of one lambda > 0, from ``force_end.solve``."""
+def node_data(lam: float, log_piece: bool) -> _tb.NodeData:
+    """Summary values and history samples of one lambda > 0, from ``force_end.solve``.
+
+    Parameters
+    ----------
+    lam : float
+        lambda (Eq. 11), > 0.
+    log_piece : bool
+        Whether lambda lies on a ln-lambda piece.
+
+    Returns
+    -------
+    dict
+        The node's data (``table_build.NodeData``).
+    """
     from . import force_end, solver
 
     s = force_end.solve(lam, rtol=RTOL)
     # the plate's end of contact, the recovery map's anchor (unused on the ln-lambda pieces)
     tau_p = np.inf if log_piece else float(solver.solve(lam, rtol=RTOL).tau_d)
-    out = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
+    out: _tb.NodeData = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
            "log_e": np.log(s.e), "xi_over_lam": s.xi / lam, "log_F_m": np.log(s.F_m),
            "log_int_F2": np.log(s.int_F2), "log_tau_p": 0.0 if log_piece else np.log(tau_p)}
     for piece in TIME_PIECES:
@@ -118,13 +167,19 @@ def node_data(lam: float, log_piece: bool) -> dict:
     return out
 
 
-def build_tables() -> dict:
-    """All coefficients, laid out as ``table_build.build_tables``' (summary per piece; history
-    per (time piece, field), per lambda piece, per sub-piece one [time degree, lambda degree]
-    matrix)."""
-    summary = {k: [] for k in SUMMARY_KEYS}
-    history = {(p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
-    weights = {key: [] for key in history}
+def build_tables() -> _tb.Tables:
+    """All coefficients, laid out as ``table_build.build_tables``'.
+
+    Returns
+    -------
+    table_build.Tables
+        Summary per piece; history per (time piece, field), per lambda piece, per sub-piece one
+        [time degree, lambda degree] matrix; the history's weights.
+    """
+    summary: dict[str, list[FloatArray]] = {k: [] for k in SUMMARY_KEYS}
+    history: dict[tuple[str, str], list[tuple[FloatArray, ...]]] = {
+        (p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
+    weights: dict[tuple[str, str], list[tuple[float, ...]]] = {key: [] for key in history}
     for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:]):
         data = [node_data(float(x), is_log_piece(a)) for x in piece_nodes(a, b)]
         for k in SUMMARY_KEYS:
@@ -138,15 +193,31 @@ def build_tables() -> dict:
 
 
 def input_files() -> list[pathlib.Path]:
-    """The sources the table is built from (its inputs hash): this builder, the layout it
-    writes and the solvers it samples."""
+    """The sources the table is built from (its inputs hash).
+
+    Returns
+    -------
+    list of pathlib.Path
+        This builder, the layout it writes and the solvers it samples.
+    """
     here = pathlib.Path(__file__).resolve().parent
     return [here / name for name in ("force_table_build.py", "force_table_layout.py",
                                      "force_end.py", "solver.py", "phases.py")]
 
 
-def render(tables: dict | None = None) -> str:
-    """Text of ``generated/exact_force_table.py``."""
+def render(tables: _tb.Tables | None = None) -> str:
+    """Text of ``generated/exact_force_table.py``.
+
+    Parameters
+    ----------
+    tables : table_build.Tables, optional
+        Built tables (``build_tables``, which is called without them).
+
+    Returns
+    -------
+    str
+        The module's text.
+    """
     import scipy
 
     t = build_tables() if tables is None else tables
@@ -163,22 +234,43 @@ def render(tables: dict | None = None) -> str:
     provenance = (f"Built by zener_sym.exact.force_table_build from scipy {scipy.__version__} "
                   f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym exact-table "
                   "--check` rebuilds and compares numerically.")
-    return table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
+    text: str = table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
+    return text
 
 
 def table_path() -> pathlib.Path:
+    """Where the generated table lives.
+
+    Returns
+    -------
+    pathlib.Path
+        ``generated/exact_force_table.py``.
+    """
     from ..codegen import generated_dir
 
-    return generated_dir() / "exact_force_table.py"
+    path: pathlib.Path = generated_dir() / "exact_force_table.py"
+    return path
 
 
-def compare(stored: dict, fresh: dict) -> list[str]:
-    """Differences beyond CHECK_RTOL between two tables (``table_build.compare``'s rule); the
-    anchor series ``log_tau_p`` is compared on the sqrt(lambda) pieces only (it is 0 on the
-    others, where a relative difference is 0/0)."""
+def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
+    """Differences beyond CHECK_RTOL between two tables (``table_build.compare``'s rule).
+
+    The anchor series ``log_tau_p`` is compared on the sqrt(lambda) pieces only (it is 0 on the
+    others, where a relative difference is 0/0).
+
+    Parameters
+    ----------
+    stored, fresh : mapping
+        As for ``table_build.compare``.
+
+    Returns
+    -------
+    list of str
+        Readable lines, one per difference (empty: they agree).
+    """
     n = sum(not is_log_piece(a) for a in LAM_PIECES[:-1])
 
-    def sqrt_pieces_only(t):
+    def sqrt_pieces_only(t: Mapping[str, Any]) -> dict[str, Any]:
         summary = dict(t["summary"])
         summary["log_tau_p"] = tuple(summary["log_tau_p"])[:n]
         return {**t, "summary": summary}

@@ -9,8 +9,12 @@ constants and writes them into ``generated/exact_force_table.py``) and the runti
 from __future__ import annotations
 
 import dataclasses
+from types import ModuleType
 
 import numpy as np
+import numpy.typing as npt
+
+from ..typing import FloatArray, RealArrayLike
 
 __all__ = ["ForceLayout", "piece_variable", "recovery_z_end", "time_of"]
 
@@ -21,50 +25,116 @@ class ForceLayout:
     in the generated module)."""
 
     #: Breakpoints of the lambda pieces (summary and history).
-    LAM_PIECES: tuple
+    LAM_PIECES: tuple[float, ...]
     #: Pieces starting at or above this lambda use ln(lambda) as their variable, below
     #: sqrt(lambda).
     LOG_FROM: float
     #: Sub-pieces (equal parts of the reduced time y) per time piece.
-    N_SUB: dict
+    N_SUB: dict[str, int]
     #: The stored summary series, in order.
-    SUMMARY_KEYS: tuple
+    SUMMARY_KEYS: tuple[str, ...]
     #: The time pieces, in the order of time.
-    TIME_PIECES: tuple = ("C", "R")
+    TIME_PIECES: tuple[str, ...] = ("C", "R")
     #: The tabulated history fields: f (delta's log-part) and v = delta'.
-    HISTORY_KEYS: tuple = ("f", "v")
+    HISTORY_KEYS: tuple[str, ...] = ("f", "v")
 
     @classmethod
-    def of(cls, module) -> "ForceLayout":
-        """The layout written into a generated table module (its upper-case names)."""
+    def of(cls, module: ModuleType) -> "ForceLayout":
+        """The layout written into a generated table module (its upper-case names).
+
+        Parameters
+        ----------
+        module : module
+            The generated table module (``zener_sym.generated.exact_force_table``).
+
+        Returns
+        -------
+        ForceLayout
+        """
         return cls(**{f.name: getattr(module, f.name) for f in dataclasses.fields(cls)})
 
     def assignments(self) -> list[str]:
-        """``NAME = value`` lines of a generated module, in field order (read back by ``of``)."""
+        """``NAME = value`` lines of a generated module, in field order (read back by ``of``).
+
+        Returns
+        -------
+        list of str
+            One line per field.
+        """
         return [f"{f.name} = {getattr(self, f.name)!r}" for f in dataclasses.fields(self)]
 
 
-def piece_variable(lam, log_piece):
-    """The Chebyshev variable of a lambda piece: ln lambda (log pieces) or sqrt(lambda)."""
-    lam = np.asarray(lam, dtype=float)
+def piece_variable(lam: RealArrayLike,
+                   log_piece: bool | npt.NDArray[np.bool_]) -> FloatArray:
+    """The Chebyshev variable of a lambda piece: ln lambda (log pieces) or sqrt(lambda).
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11), >= 0.
+    log_piece : bool or ndarray of bool
+        Whether lambda lies on a ln-lambda piece (at or above LOG_FROM).
+
+    Returns
+    -------
+    ndarray
+        ln lambda or sqrt(lambda), the broadcast shape.
+    """
+    lam_a = np.asarray(lam, dtype=float)
     with np.errstate(divide="ignore"):
-        return np.where(log_piece, np.log(np.where(log_piece, lam, 1.0)), np.sqrt(lam))
+        return np.where(log_piece, np.log(np.where(log_piece, lam_a, 1.0)), np.sqrt(lam_a))
 
 
-def recovery_z_end(tau_dc, tau_d, tau_p):
-    """z at tau_d of the recovery map tau = tau_P - (tau_P - tau_dc) z^2 (z = 1 at tau_dc)."""
+def recovery_z_end(tau_dc: float | FloatArray, tau_d: float | FloatArray,
+                   tau_p: float | FloatArray) -> FloatArray:
+    """z at tau_d of the recovery map tau = tau_P - (tau_P - tau_dc) z^2 (z = 1 at tau_dc).
+
+    Parameters
+    ----------
+    tau_dc, tau_d : float or ndarray
+        End of compression and the force-free end.
+    tau_p : float or ndarray
+        The plate's end of contact (delta = 0) of the same trajectory.
+
+    Returns
+    -------
+    ndarray
+        z at tau_d, in [0, 1].
+    """
     with np.errstate(invalid="ignore", divide="ignore"):
         # clipped at 0: at lambda = 0 tau_d = tau_P, each to rounding
-        return np.sqrt(np.maximum(tau_p - tau_d, 0.0) / (tau_p - tau_dc))
+        z: FloatArray = np.sqrt(np.maximum(tau_p - tau_d, 0.0) / (tau_p - tau_dc))
+        return z
 
 
-def time_of(piece: str, y, tau_dc, tau_d, tau_p, log_piece):
-    """tau at the reduced time y in [0, 1] of time piece ``piece``: C, tau = tau_dc y^2; R on a
-    log piece, tau linear in y from tau_dc to tau_d; R below, tau = tau_P - (tau_P - tau_dc) z^2
-    with z linear in y from 1 to ``recovery_z_end``."""
+def time_of(piece: str, y: FloatArray, tau_dc: float | FloatArray, tau_d: float | FloatArray,
+            tau_p: float | FloatArray, log_piece: bool) -> FloatArray:
+    """tau at the reduced time y in [0, 1] of time piece ``piece``.
+
+    C: tau = tau_dc y^2; R on a log piece: tau linear in y from tau_dc to tau_d; R below:
+    tau = tau_P - (tau_P - tau_dc) z^2 with z linear in y from 1 to ``recovery_z_end``.
+
+    Parameters
+    ----------
+    piece : str
+        "C" or "R".
+    y : ndarray
+        Reduced times in [0, 1].
+    tau_dc, tau_d, tau_p : float or ndarray
+        End of compression, force-free end and the plate's end of contact.
+    log_piece : bool
+        Whether lambda lies on a ln-lambda piece.
+
+    Returns
+    -------
+    ndarray
+        tau, y's shape.
+    """
     if piece == "C":
-        return tau_dc * y * y
-    if log_piece:
-        return tau_dc + (tau_d - tau_dc) * y
-    z = 1.0 - (1.0 - recovery_z_end(tau_dc, tau_d, tau_p)) * y
-    return tau_p - (tau_p - tau_dc) * z * z
+        t: FloatArray = tau_dc * y * y
+    elif log_piece:
+        t = tau_dc + (tau_d - tau_dc) * y
+    else:
+        z = 1.0 - (1.0 - recovery_z_end(tau_dc, tau_d, tau_p)) * y
+        t = tau_p - (tau_p - tau_dc) * z * z
+    return t

@@ -22,10 +22,12 @@ e -> 1; below, through e itself. e = 1 and xi = 0 give lambda = 0 exactly.
 from __future__ import annotations
 
 import functools
+from types import ModuleType
 
 import numpy as np
 
 from .. import params
+from ..typing import FloatArray, RealArrayLike
 from . import force_table as _force_table
 from . import table as _table
 
@@ -40,13 +42,13 @@ H_TOL = 4.0 * np.finfo(float).eps
 MAX_ITER = 200
 
 
-def _tab(contact_end: str):
+def _tab(contact_end: str) -> ModuleType:
     """The table module of an end of contact."""
     return _force_table if contact_end == "force" else _table
 
 
 @functools.cache
-def _grid(contact_end: str):
+def _grid(contact_end: str) -> tuple[FloatArray, dict[str, FloatArray]]:
     """The bracketing grid of lambda (dense near 0, where the force end goes like sqrt(lambda),
     geometric above 5) and the summary tabulated on it."""
     lam = np.unique(np.concatenate([
@@ -58,13 +60,23 @@ def _grid(contact_end: str):
 
 
 @functools.cache
-def tau_d_branch(contact_end: str = "delta"):
-    """(lambda_lo, lambda_hi, direction): the range of lambda on which tau_d(lambda) is monotone
-    and which :func:`lam_for` inverts (direction +1 increasing, -1 decreasing).
+def tau_d_branch(contact_end: str = "delta") -> tuple[float, float, int]:
+    """The range of lambda on which tau_d(lambda) is monotone, which :func:`lam_for` inverts.
 
     Found on the tables: the sign of d tau_d / d lambda (``summary_derivative``) on the
     bracketing grid; where it changes, the run that reaches LAM_MAX is kept (the other branch's
-    values are refused as ambiguous)."""
+    values are refused as ambiguous).
+
+    Parameters
+    ----------
+    contact_end : str
+        "delta" (the plate) or "force" (the grains' force-free end).
+
+    Returns
+    -------
+    tuple
+        (lambda_lo, lambda_hi, direction): direction +1 increasing, -1 decreasing.
+    """
     lam, _ = _grid(contact_end)
     pos = lam[lam > 0]  # the force end has no derivative at 0 (its variable is sqrt(lambda))
     sign = np.sign(_table.summary_derivative(pos, "tau_d", contact_end=contact_end))
@@ -74,9 +86,23 @@ def tau_d_branch(contact_end: str = "delta"):
     return start, float(lam[-1]), int(sign[-1])
 
 
-def reachable(quantity: str, contact_end: str = "delta") -> tuple:
-    """(smallest, largest) value of ``quantity`` the tables reach on the lambda it is solved on
-    (e: [e(LAM_MAX), 1]; xi: [0, xi(LAM_MAX)]; tau_d: over ``tau_d_branch``)."""
+def reachable(quantity: str, contact_end: str = "delta") -> tuple[float, float]:
+    """(smallest, largest) value of ``quantity`` the tables reach on the lambda it is solved on.
+
+    e: [e(LAM_MAX), 1]; xi: [0, xi(LAM_MAX)]; tau_d: over ``tau_d_branch``.
+
+    Parameters
+    ----------
+    quantity : str
+        One of ``QUANTITIES``.
+    contact_end : str
+        "delta" or "force".
+
+    Returns
+    -------
+    tuple of float
+        (smallest, largest).
+    """
     lam, q = _grid(contact_end)
     v = q[quantity]
     if quantity == "tau_d":
@@ -85,8 +111,8 @@ def reachable(quantity: str, contact_end: str = "delta") -> tuple:
     return float(v.min()), float(v.max())
 
 
-def _targets(value, name):
-    arr = params._as_float_array(value, name)
+def _targets(value: RealArrayLike, name: str) -> FloatArray:
+    arr: FloatArray = params._as_float_array(value, name)
     if arr.size == 0:
         raise ValueError(f"{name} is empty: give at least one value")
     if not np.all(np.isfinite(arr)):
@@ -94,10 +120,27 @@ def _targets(value, name):
     return arr
 
 
-def lam_for(e=None, xi=None, tau_d=None, contact_end: str = "delta") -> np.ndarray:
-    """The lambda in [0, LAM_MAX] whose tabulated summary has the given e, xi or tau_d.
+def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
+            tau_d: RealArrayLike | None = None, contact_end: str = "delta") -> FloatArray:
+    """The lambda (Eq. 11) in [0, LAM_MAX] whose tabulated summary has the given e, xi or tau_d.
 
-    Exactly one of ``e``, ``xi``, ``tau_d`` (float or array; the result has its shape).
+    Parameters
+    ----------
+    e : float or array_like, optional
+        Coefficient of restitution, in (0, 1].
+    xi : float or array_like, optional
+        Energy-loss ratio 1 - e^2 (Eq. 69), in [0, 1).
+    tau_d : float or array_like, optional
+        Contact duration, > 0.
+    contact_end : str
+        "delta" (the plate) or "force" (the grains' force-free end).
+
+    Exactly one of ``e``, ``xi``, ``tau_d`` is given.
+
+    Returns
+    -------
+    ndarray
+        lambda, of the given quantity's shape.
 
     Raises
     ------
@@ -164,12 +207,15 @@ def lam_for(e=None, xi=None, tau_d=None, contact_end: str = "delta") -> np.ndarr
     return _solve("tau_d", x, contact_end)
 
 
-def _log_quantity(quantity, lam, contact_end):
+def _log_quantity(quantity: str, lam: FloatArray,
+                  contact_end: str) -> tuple[FloatArray, FloatArray]:
     """(ln q, d ln q / d lambda) from the tables' one series behind q."""
-    return _tab(contact_end).log_quantity(lam, quantity)
+    if contact_end == "force":
+        return _force_table.log_quantity(lam, quantity)
+    return _table.log_quantity(lam, quantity)
 
 
-def _solve(quantity: str, target: np.ndarray, contact_end: str) -> np.ndarray:
+def _solve(quantity: str, target: FloatArray, contact_end: str) -> FloatArray:
     """lambda with q(lambda) = target (> 0, inside the reachable range), safeguarded Newton on
     h = ln q - ln target (module docstring). Returns an array of target's shape."""
     shape = target.shape
@@ -197,7 +243,7 @@ def _solve(quantity: str, target: np.ndarray, contact_end: str) -> np.ndarray:
         lin = lo + (hi - lo) * (t - q_lo) / (q_hi - q_lo)
     guess = np.where(lo > 0, guess, np.where(qg[0] == 0.0, from_zero, lin))
     guess = np.where(np.isfinite(guess) & (guess > lo) & (guess < hi), guess, 0.5 * (lo + hi))
-    lam = guess
+    lam: FloatArray = guess
     sign = 1.0 if increasing else -1.0
     log_t = np.log(t)
     active = np.arange(t.size)

@@ -38,12 +38,15 @@ from __future__ import annotations
 import bisect
 import math
 import numbers
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import mpmath
 import numpy as np
 
 from .. import params
+from ..typing import FloatArray, RealArrayLike, RealLike
 from .solver import LAMBDA_MAX, ContactTimes
 
 __all__ = ["MpSolution", "solve", "check_dps", "DPS_MIN", "DPS_MAX"]
@@ -63,42 +66,57 @@ _V_SWITCH = mpmath.mpf(1) / 2  # relative velocity at which loading hands over f
 class _Step:
     """One Taylor step: the polynomial  y_i(x0 + s) = Σ_k c[i][k] s^k  for s between 0 and h."""
 
-    x0: object
-    h: object
-    c: list  # c[i][k], mpf
+    x0: Any  # mpf, as are h and the coefficients
+    h: Any
+    c: list[list[Any]]  # c[i][k]
 
 
 @dataclass
 class _Phase:
     kind: str  # "u" (states tau, v, w, J) or "tau" (states delta, v, w, J)
-    steps: list = field(default_factory=list)
-    t_start: list = field(default_factory=list)  # tau at the start of each step (increasing)
-    _flt: tuple | None = None  # float copies for the vectorised history, built on demand
+    steps: list[_Step] = field(default_factory=list)
+    t_start: list[Any] = field(default_factory=list)  # tau (mpf) at each step's start, increasing
+    # float copies for the vectorised history, built on demand
+    _flt: tuple[FloatArray, FloatArray, FloatArray, FloatArray] | None = None
 
-    def floats(self):
+    def floats(self) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
         """Per-step arrays of x0, h, τ at start, and scaled coefficients c_k h^k as floats."""
         if self._flt is None:
             x0 = np.array([float(st.x0) for st in self.steps])
             h = np.array([float(st.h) for st in self.steps])
-            cs = []
+            rows = []
             for st in self.steps:
                 hp = [mpmath.mpf(1)]
                 for _ in range(len(st.c[0]) - 1):
                     hp.append(hp[-1] * st.h)
-                cs.append([[float(ck * hk) for ck, hk in zip(ci, hp)] for ci in st.c])
-            cs = np.array(cs)  # (steps, states, N+1): coefficients of σ = s/h in [0, 1]
+                rows.append([[float(ck * hk) for ck, hk in zip(ci, hp)] for ci in st.c])
+            cs = np.array(rows)  # (steps, states, N+1): coefficients of σ = s/h in [0, 1]
             self._flt = (x0, h, np.array([float(t) for t in self.t_start]), cs)
         return self._flt
 
 
-def horner(c, s):
+def horner(c: Sequence[Any], s: Any) -> Any:
+    """Σ_k c_k s^k by Horner's rule (mpmath numbers, or anything with + and *).
+
+    Parameters
+    ----------
+    c : sequence
+        Coefficients c_0 ... c_n, n >= 0.
+    s : mpmath.mpf or float
+        The argument.
+
+    Returns
+    -------
+    mpmath.mpf or float
+        The polynomial at s.
+    """
     acc = c[-1]
     for ck in reversed(c[:-1]):
         acc = acc * s + ck
     return acc
 
 
-def _horner_d(c, s):
+def _horner_d(c: Sequence[Any], s: Any) -> tuple[Any, Any]:
     """Value and derivative of Σ c_k s^k."""
     p, dp = c[-1], 0
     for ck in reversed(c[:-1]):
@@ -107,7 +125,7 @@ def _horner_d(c, s):
     return p, dp
 
 
-def _poly_root(c, target, h):
+def _poly_root(c: Sequence[Any], target: Any, h: Any) -> Any:
     """s between 0 and h with Σ c_k s^k = target (a simple root of a monotone piece), by Newton."""
     p0, ph = c[0], horner(c, h)
     s = h * (target - p0) / (ph - p0)
@@ -125,7 +143,7 @@ def _order(dps: int) -> int:
     return int(math.ceil((dps + _GUARD_TOL) * math.log(10) / 2)) + 1
 
 
-def _step_size(c, N):
+def _step_size(c: list[list[Any]], N: int) -> Any:
     """h = ρ e^{-2} e^{-0.7/(N-1)} with ρ = min_ij |c_ij|^{-1/j}, j = N-5..N (module docstring)."""
     rho = None
     for ci in c:
@@ -139,7 +157,7 @@ def _step_size(c, N):
     return rho * mpmath.exp(-2 - mpmath.mpf(0.7) / (N - 1))
 
 
-def _jets_u(u0, y0, lam, N):
+def _jets_u(u0: Any, y0: Sequence[Any], lam: Any, N: int) -> list[list[Any]]:
     """Taylor coefficients in s = u − u0 of (τ, v, w, J) of the u-form (phases 1 and 3)."""
     tau, v, w, J = ([y] for y in y0)
     binom = mpmath.binomial
@@ -147,7 +165,7 @@ def _jets_u(u0, y0, lam, N):
     P2 = [3 * lam * u0**2, 6 * lam * u0, 3 * lam]  # 3λu²
     P4 = [2 * binom(4, k) * u0 ** (4 - k) for k in range(5)]  # 2u⁴
     P7 = [2 * binom(7, k) * u0 ** (7 - k) for k in range(8)]  # 2u⁷
-    q = []  # 1/v
+    q: list[Any] = []  # 1/v
     inv_v0 = 1 / v[0]
     fdot = mpmath.fdot
     for k in range(N):
@@ -166,14 +184,14 @@ def _jets_u(u0, y0, lam, N):
     return [tau, v, w, J]
 
 
-def _jets_tau(y0, lam, N):
+def _jets_tau(y0: Sequence[Any], lam: Any, N: int) -> list[list[Any]]:
     """Taylor coefficients in s = τ − τ0 of (δ, v, w, J) of the τ-form (phase 2)."""
     d, v, w, J = ([y] for y in y0)
     if not d[0] > 0:
         raise RuntimeError(f"exact_mp: delta = {d[0]} <= 0 inside the tau phase (guard)")
     sq = [mpmath.sqrt(d[0])]  # √δ
     two_s0 = 2 * sq[0]
-    F = []
+    F: list[Any] = []
     c15 = mpmath.mpf(3) / 2 * lam
     fdot = mpmath.fdot
     for k in range(N):
@@ -197,53 +215,73 @@ class MpSolution(ContactTimes):
     they agree (F̄ = 0 there), which the identity Ī = 1 + e checks.
     """
 
-    lam: object
+    # mpmath.mpf (untyped)
+    lam: Any
     dps: int
-    delta_m: object
-    tau_dc: object
-    tau_d: object
-    v_end: object
-    w_end: object
-    int_F2: object
-    n_steps: tuple
-    phases: list = field(repr=False)  # the Taylor steps (dense output), too long to print
+    delta_m: Any
+    tau_dc: Any
+    tau_d: Any
+    v_end: Any
+    w_end: Any
+    int_F2: Any
+    n_steps: tuple[int, int, int]
+    phases: list[_Phase] = field(repr=False)  # the Taylor steps (dense output), too long to print
 
     @property
-    def e(self):
+    def e(self) -> Any:
+        """Coefficient of restitution e = −δ'(τ_d) (mpf)."""
         return -self.v_end
 
     @property
-    def F_m(self):
+    def F_m(self) -> Any:
+        """Largest force F̄_m = δ_m^{3/2} (mpf)."""
         return self.delta_m * mpmath.sqrt(self.delta_m)  # F̄ = δ^{3/2} is monotone in δ
 
     @property
-    def impulse(self):
+    def impulse(self) -> Any:
+        """Ī(τ_d) = 1 − w_end (mpf)."""
         return 1 - self.w_end
 
     @property
-    def xi(self):
+    def xi(self) -> Any:
         """xi = 2λ∫F̄² dτ (energy balance, = 1 − e²): exactly 0 at λ = 0 and never negative,
         where 1 − w_end² would be a rounding-level number of either sign."""
         return 2 * self.lam * self.int_F2
 
     # --- history -------------------------------------------------------------------------
 
-    def _locate(self, t):
+    def _locate(self, t: Any) -> tuple[_Phase, int]:
         """(phase, step index) holding the time t < τ_d."""
         for ph in reversed(self.phases):
             if t >= ph.t_start[0]:
                 return ph, bisect.bisect_right(ph.t_start, t) - 1
         return self.phases[0], 0
 
-    def history_mp(self, taus) -> dict:
+    def history_mp(self, taus: Any) -> dict[str, list[Any]]:
         """δ, Ī, sphere velocity 1 − Ī and force δ^{3/2} as lists of mpf at the times ``taus``.
 
         Past the end of contact δ and the force are 0 and the impulse keeps its final value.
+
+        Parameters
+        ----------
+        taus : mpf, float, str or a sequence of them
+            Times, >= 0 (anything ``mpmath.mpf`` takes).
+
+        Returns
+        -------
+        dict of str to list of mpf
+            "tau", "delta", "impulse", "velocity", "force".
+
+        Raises
+        ------
+        ValueError
+            For a negative time.
         """
-        taus = [mpmath.mpf(t) for t in np.atleast_1d(np.asarray(taus, dtype=object)).ravel()]
-        out = {k: [] for k in ("tau", "delta", "impulse", "velocity", "force")}
+        times = [mpmath.mpf(t) for t in np.atleast_1d(np.asarray(taus, dtype=object)).ravel()]
+        out: dict[str, list[Any]] = {k: [] for k in ("tau", "delta", "impulse", "velocity",
+                                                     "force")}
         with mpmath.workdps(self.dps + GUARD_WORK):
-            for t in taus:
+            for t in times:
                 if t < 0:
                     raise ValueError(f"tau must be >= 0 (contact starts at tau = 0), got {t}")
                 if t >= self.tau_d:
@@ -266,16 +304,31 @@ class MpSolution(ContactTimes):
                 out["force"].append(d * mpmath.sqrt(d))
         return out
 
-    def history(self, tau) -> dict:
+    def history(self, tau: RealArrayLike) -> dict[str, FloatArray]:
         """Float arrays tau, delta, impulse, velocity (1 − Ī) and force at ``tau`` (>= 0).
 
         Evaluates the stored Taylor polynomials in double precision (the u-phases invert τ(u)
         by Newton's method), so the error is a few ulps of each field's scale.
+
+        Parameters
+        ----------
+        tau : array_like
+            Times, finite and >= 0.
+
+        Returns
+        -------
+        dict of str to ndarray
+            "tau", "delta", "impulse", "velocity", "force", each of tau's shape.
+
+        Raises
+        ------
+        ValueError
+            For a negative or non-finite time.
         """
-        tau = params.as_tau(tau)
-        flat = tau.ravel()
-        delta = np.zeros_like(flat)
-        w = np.full_like(flat, float(self.w_end))
+        t_arr: FloatArray = params.as_tau(tau)
+        flat = t_arr.ravel()
+        d_flat = np.zeros_like(flat)
+        w_flat = np.full_like(flat, float(self.w_end))
         for ph in self.phases:
             x0, h, t0, cs = ph.floats()
             idx = np.nonzero((flat >= t0[0]) & (flat < float(self.tau_d)))[0]
@@ -293,26 +346,27 @@ class MpSolution(ContactTimes):
                 sig = _invert_np(C[:, 0], flat[idx])
                 u = x0[k] + sig * h[k]
                 d = u * u
-            delta[idx] = d
-            w[idx] = _horner_np(C[:, 2], sig)
-        delta = np.maximum(delta, 0.0).reshape(tau.shape)
-        w = w.reshape(tau.shape)
-        return {"tau": tau, "delta": delta, "impulse": 1.0 - w, "velocity": w,
+            d_flat[idx] = d
+            w_flat[idx] = _horner_np(C[:, 2], sig)
+        delta = np.maximum(d_flat, 0.0).reshape(t_arr.shape)
+        w = w_flat.reshape(t_arr.shape)
+        return {"tau": t_arr, "delta": delta, "impulse": 1.0 - w, "velocity": w,
                 "force": delta**1.5}
 
 
-def _horner_np(C, x):
-    acc = C[:, -1].copy()
+def _horner_np(C: FloatArray, x: FloatArray) -> FloatArray:
+    """Σ_k C[:, k] x^k per row (float Horner)."""
+    acc: FloatArray = C[:, -1].copy()
     for j in range(C.shape[1] - 2, -1, -1):
         acc = acc * x + C[:, j]
     return acc
 
 
-def _invert_np(C, t):
+def _invert_np(C: FloatArray, t: FloatArray) -> FloatArray:
     """σ in [0, 1] with Σ_k C_k σ^k = t (τ monotone along a u-step), by Newton from a √-guess."""
     t_a, t_b = C[:, 0], C.sum(axis=1)
     frac = np.clip((t - t_a) / (t_b - t_a), 0.0, 1.0)
-    sig = frac.copy()
+    sig: FloatArray = frac.copy()
     dC = C[:, 1:] * np.arange(1, C.shape[1])
     for _ in range(60):
         p, dp = _horner_np(C, sig), _horner_np(dC, sig)
@@ -324,20 +378,37 @@ def _invert_np(C, t):
     return sig
 
 
-def check_dps(dps) -> int:
-    """dps as an int; ValueError unless it is an integer (not bool) in [DPS_MIN, DPS_MAX]."""
+def check_dps(dps: object) -> int:
+    """Validate the number of decimal digits of the mpmath solution.
+
+    Parameters
+    ----------
+    dps : int
+        An integer (not bool) in [DPS_MIN, DPS_MAX].
+
+    Returns
+    -------
+    int
+        dps.
+
+    Raises
+    ------
+    ValueError
+        If dps is not an integer or outside [DPS_MIN, DPS_MAX].
+    """
     if isinstance(dps, bool) or not isinstance(dps, numbers.Integral):
         raise ValueError(f"dps must be an integer in [{DPS_MIN}, {DPS_MAX}] (decimal digits), "
                          f"got {dps!r}")
-    if not DPS_MIN <= dps <= DPS_MAX:
+    n = int(dps)
+    if not DPS_MIN <= n <= DPS_MAX:
         raise ValueError(f"dps must be in [{DPS_MIN}, {DPS_MAX}] (decimal digits), got {dps}")
-    return int(dps)
+    return n
 
 
 _check_dps = check_dps
 
 
-def solve(lam, dps: int = 30) -> MpSolution:
+def solve(lam: RealLike, dps: int = 30) -> MpSolution:
     """Integrate Eq. (10) for one lambda to the end of contact with about ``dps`` correct digits.
 
     Parameters
@@ -370,7 +441,7 @@ def solve(lam, dps: int = 30) -> MpSolution:
         return _integrate(lam_mp, dps, N)
 
 
-def _integrate(lam, dps, N):
+def _integrate(lam: Any, dps: int, N: int) -> MpSolution:
     zero, one = mpmath.mpf(0), mpmath.mpf(1)
 
     # Phase 1: u from 0, state (τ, v, w, J), until v = 1/2.

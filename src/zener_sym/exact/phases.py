@@ -18,11 +18,17 @@ where it fires; the phases after it are not integrated.
 """
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Callable, Mapping
+from typing import TYPE_CHECKING, Any, Union, overload
 
 import numpy as np
 from scipy.integrate import solve_ivp
+
+from ..typing import FloatArray
+
+if TYPE_CHECKING:
+    from scipy.integrate import OdeSolution
 
 __all__ = ["eval_budget", "Budget", "Settings", "Event", "Form", "Leg", "Contact", "integrate",
            "run_leg", "positive", "V_SWITCH"]
@@ -33,6 +39,16 @@ V_SWITCH = 0.5
 #: τ_dc at v = 0, the force-free end at g = 0).
 FREE_STATES = ("v", "w", "g")
 
+#: A state or rate: a float in scipy's right-hand sides, an array of points in the table
+#: builder's re-integration (``table_build._from_steps``).
+Value = Union[float, FloatArray]
+#: The rates of a form, f(x, y) -> (dy_0/dx, dy_1/dx, ...), y the state vector (or [state, point]).
+Terms = Callable[[float, FloatArray], tuple[Value, ...]]
+#: A function of the point (x, y): the velocity delta' of a form, an event's g.
+PointFunction = Callable[[float, FloatArray], Value]
+#: Named values at one point (``Leg.values``): the states, x ("u" or "tau"), delta and v.
+Values = dict[str, float]
+
 
 def eval_budget(lam: float) -> int:
     """Most right-hand-side evaluations one solve may spend before it gives up (RuntimeError).
@@ -40,17 +56,42 @@ def eval_budget(lam: float) -> int:
     DOP853 at rtol 1e-13 needs about 2000 + 2000 lambda; the budget is a few times that, so a
     slow combination of options (RK23 at the smallest rtol at lambda = 1000) ends in seconds
     with an error instead of running for hours.
+
+    Parameters
+    ----------
+    lam : float
+        lambda of the solve (Eq. 11).
+
+    Returns
+    -------
+    int
+        The budget.
     """
     return int(500_000 + 2500 * lam)
 
 
 class Budget:
-    """Counts right-hand-side evaluations against ``eval_budget``."""
+    """Counts right-hand-side evaluations against ``eval_budget``.
 
-    def __init__(self, lam, method, rtol):
+    Parameters
+    ----------
+    lam : float
+        lambda of the solve (Eq. 11), which sets the budget.
+    method, rtol : str, float
+        The solve's options, named in the error message.
+    """
+
+    def __init__(self, lam: float, method: str, rtol: float) -> None:
         self.left, self.lam, self.method, self.rtol = eval_budget(lam), lam, method, rtol
 
-    def spend(self):
+    def spend(self) -> None:
+        """Count one evaluation.
+
+        Raises
+        ------
+        RuntimeError
+            When the budget is spent.
+        """
         self.left -= 1
         if self.left < 0:
             raise RuntimeError(
@@ -59,9 +100,28 @@ class Budget:
                 f"default method (DOP853), LSODA, or a looser rtol")
 
 
-def positive(d):
-    """δ guarded to >= 0 (the contact force of a negative trial δ is zero); a scalar in the
-    solver's right-hand sides (cheap), an array in the table builder's re-integration."""
+@overload
+def positive(d: float) -> float: ...
+
+
+@overload
+def positive(d: FloatArray) -> FloatArray: ...
+
+
+def positive(d: Value) -> Value:
+    """δ guarded to >= 0 (the contact force of a negative trial δ is zero).
+
+    Parameters
+    ----------
+    d : float or ndarray
+        δ: a scalar in the solver's right-hand sides (cheap), an array in the table builder's
+        re-integration.
+
+    Returns
+    -------
+    float or ndarray
+        max(δ, 0), of d's type.
+    """
     if isinstance(d, np.ndarray):
         return np.maximum(d, 0.0)
     return d if d > 0.0 else 0.0
@@ -78,7 +138,7 @@ class Settings:
     who: str = "exact solver"
     budget: Budget = field(init=False)
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         object.__setattr__(self, "budget", Budget(self.lam, self.method, self.rtol))
 
 
@@ -88,11 +148,11 @@ class Event:
     ``terminal`` attributes)."""
 
     name: str
-    fn: Callable
+    fn: PointFunction
     direction: int = 0
     terminal: bool = False
 
-    def __call__(self, x, y):
+    def __call__(self, x: float, y: FloatArray) -> Value:
         return self.fn(x, y)
 
 
@@ -108,33 +168,68 @@ class Form:
     """
 
     kind: str
-    states: tuple
-    terms: Callable
-    velocity: Callable
+    states: tuple[str, ...]
+    terms: Terms
+    velocity: PointFunction
     lam: float
-    derived: Mapping = field(default_factory=dict)
+    derived: Mapping[str, Callable[[Mapping[str, float]], float]] = field(default_factory=dict)
 
-    def rhs(self, budget=None):
-        """The right-hand side f(x, y) for ``solve_ivp``, spending ``budget`` per call."""
+    def rhs(self, budget: Budget | None = None) -> Callable[[float, FloatArray], FloatArray]:
+        """The right-hand side f(x, y) for ``solve_ivp``, spending ``budget`` per call.
+
+        Parameters
+        ----------
+        budget : Budget, optional
+            Charged one evaluation per call (none: free).
+
+        Returns
+        -------
+        callable
+            f(x, y) -> the rates as an array.
+        """
         terms = self.terms
         if budget is None:
             return lambda x, y: np.array(terms(x, y))
 
-        def f(x, y):
+        def f(x: float, y: FloatArray) -> FloatArray:
             budget.spend()
             return np.array(terms(x, y))
 
         return f
 
-    def atol(self, atol: float) -> np.ndarray:
+    def atol(self, atol: float) -> FloatArray:
+        """Absolute tolerance per state: ``atol``, none (1e-300) for ``FREE_STATES``.
+
+        Parameters
+        ----------
+        atol : float
+            The solve's absolute tolerance.
+
+        Returns
+        -------
+        ndarray
+            One tolerance per state.
+        """
         return np.array([1e-300 if s in FREE_STATES else atol for s in self.states])
 
-    def pack(self, values: dict) -> list:
-        """The initial state from named values (``Leg.values``) and ``derived``."""
+    def pack(self, values: Mapping[str, float]) -> list[float]:
+        """The initial state from named values (``Leg.values``) and ``derived``.
+
+        Parameters
+        ----------
+        values : mapping of str to float
+            Named values where the previous phase ended.
+
+        Returns
+        -------
+        list of float
+            The state in ``states`` order.
+        """
         return [values[s] if s in values else self.derived[s](values) for s in self.states]
 
     @property
     def w_row(self) -> int:
+        """Index of the state w = 1 − Ī."""
         return self.states.index("w")
 
 
@@ -145,48 +240,86 @@ class Leg:
 
     name: str
     form: Form
-    sol: object
-    x: np.ndarray
-    y: np.ndarray
-    hits: dict
+    sol: OdeSolution
+    x: FloatArray
+    y: FloatArray
+    hits: dict[str, list[tuple[float, FloatArray]]]
     ended_by: str | None
 
-    def values(self, x, y) -> dict:
-        """Named values at one point: the states, x ("u" or "tau"), δ and v."""
-        x = float(x)
-        out = dict(zip(self.form.states, y))
-        out[self.form.kind] = x
+    def values(self, x: float, y: FloatArray) -> Values:
+        """Named values at one point: the states, x ("u" or "tau"), δ and v.
+
+        Parameters
+        ----------
+        x : float
+            The independent variable.
+        y : ndarray
+            The state there.
+
+        Returns
+        -------
+        dict of str to float
+        """
+        xf = float(x)
+        out: Values = dict(zip(self.form.states, y))
+        out[self.form.kind] = xf
         if self.form.kind == "u":
-            out["delta"] = x * x
+            out["delta"] = xf * xf
         if "v" not in out:
-            out["v"] = self.form.velocity(x, y)
+            v: float = self.form.velocity(xf, y)  # type: ignore[assignment]  # y is one point
+            out["v"] = v
         return out
 
-    def hit(self, name: str) -> dict | None:
-        """``values`` at the first occurrence of the event ``name`` (None if it did not fire)."""
-        found = self.hits.get(name, ())
+    def hit(self, name: str) -> Values | None:
+        """``values`` at the first occurrence of the event ``name``.
+
+        Parameters
+        ----------
+        name : str
+            The event's name.
+
+        Returns
+        -------
+        dict of str to float or None
+            None if the event did not fire.
+        """
+        found = self.hits.get(name, [])
         return self.values(*found[0]) if len(found) else None
 
     @property
-    def end(self) -> dict:
+    def end(self) -> Values:
         """``values`` where the leg ended: the ending event's point, else the span's end."""
         if self.ended_by is not None:
-            return self.hit(self.ended_by)
+            found = self.hit(self.ended_by)
+            assert found is not None  # run_leg sets ended_by to an event that fired
+            return found
         return self.values(self.x[-1], self.y[:, -1])
 
     @property
     def tau_start(self) -> float:
+        """τ at the leg's start."""
         return float(self.y[0, 0] if self.form.kind == "u" else self.x[0])
 
-    def delta_w(self, tau: np.ndarray) -> tuple:
-        """(δ, w) at the times ``tau`` inside this leg (a u-leg inverts τ(u) by Newton)."""
+    def delta_w(self, tau: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """(δ, w) at the times ``tau`` inside this leg (a u-leg inverts τ(u) by Newton).
+
+        Parameters
+        ----------
+        tau : ndarray
+            Times inside the leg.
+
+        Returns
+        -------
+        tuple of ndarray
+            δ and w = 1 − Ī, tau's shape.
+        """
         if self.form.kind == "tau":
             y = self.sol(tau)
             return y[0], y[self.form.w_row]
         u, y = self._invert(tau)
         return u**2, y[self.form.w_row]
 
-    def _invert(self, tau):
+    def _invert(self, tau: FloatArray) -> tuple[FloatArray, FloatArray]:
         """u with τ(u) = tau: interpolate u² against τ on the steps, then Newton."""
         u_grid, tau_grid, lam = self.x, self.y[0], self.form.lam
         order = np.argsort(tau_grid)
@@ -205,10 +338,39 @@ class Leg:
         return u, self.sol(u)
 
 
-def run_leg(name, form, span, y0, opts: Settings, events=(), first_step=None) -> Leg:
-    """Integrate one phase; it must end at one of its terminal events if it has any, else at the
-    span's end (RuntimeError otherwise, and for scipy's own failures)."""
-    kw = {} if first_step is None else {"first_step": first_step}
+def run_leg(name: str, form: Form, span: tuple[float, float], y0: Sequence[float],
+            opts: Settings, events: Sequence[Event] = (),
+            first_step: float | None = None) -> Leg:
+    """Integrate one phase with ``solve_ivp`` (dense output).
+
+    Parameters
+    ----------
+    name : str
+        The phase's name ("loading", "middle", "unloading"), for messages.
+    form : Form
+        Its equations.
+    span : tuple of float
+        (x_start, x_end).
+    y0 : sequence of float
+        The initial state, in ``form.states`` order.
+    opts : Settings
+        Tolerances, method and budget.
+    events : sequence of Event
+        The events watched.
+    first_step : float, optional
+        ``solve_ivp``'s first step.
+
+    Returns
+    -------
+    Leg
+
+    Raises
+    ------
+    RuntimeError
+        If the phase does not end at one of its terminal events (if it has any) or at the
+        span's end, or scipy fails.
+    """
+    kw: dict[str, float] = {} if first_step is None else {"first_step": first_step}
     try:
         r = solve_ivp(form.rhs(opts.budget), span, y0, method=opts.method, rtol=opts.rtol,
                       atol=form.atol(opts.atol), events=list(events) or None, dense_output=True,
@@ -235,29 +397,41 @@ class Contact:
     terminal extra event ends the contact where it fires."""
 
     u_form: Form
-    middle: tuple
-    events: Mapping = field(default_factory=dict)
+    middle: tuple[Form, ...]
+    events: Mapping[str, Sequence[Event]] = field(default_factory=dict)
 
-    def extra(self, phase: str) -> tuple:
+    def extra(self, phase: str) -> tuple[Event, ...]:
+        """The extra events of a phase.
+
+        Parameters
+        ----------
+        phase : str
+            "loading", "middle" or "unloading".
+
+        Returns
+        -------
+        tuple of Event
+        """
         return tuple(self.events.get(phase, ()))
 
 
-def _v_half(form):
+def _v_half(form: Form) -> Event:
     return Event("v = 1/2", lambda u, y: form.velocity(u, y) - V_SWITCH, -1, True)
 
 
-def _compression_end(terminal):
+def _compression_end(terminal: bool) -> Event:
     # on the state v (every middle form carries it second): relatively accurate near its zero
     return Event("end of compression", lambda t, y: y[1], -1, terminal)
 
 
-def _hand_over(form):
+def _hand_over(form: Form) -> Event:
     # |∂(dw/du)/∂w|·u = 2u⁵/v² <= 1: v² >= 2δ^{5/2}; after the end of compression v² − 2δ^{5/2}
     # only increases, so the rising crossing is unique
-    def g(t, y):
+    def g(t: float, y: FloatArray) -> Value:
         d = max(y[0], 0.0)
         v = form.velocity(t, y)
-        return v * v - 2.0 * d * d * np.sqrt(d)
+        out: Value = v * v - 2.0 * d * d * np.sqrt(d)
+        return out
 
     return Event("hand-over", g, 1, True)
 
@@ -266,12 +440,32 @@ def _ends(leg: Leg, contact: Contact, phase: str) -> bool:
     return any(e.terminal and e.name == leg.ended_by for e in contact.extra(phase))
 
 
-def integrate(contact: Contact, opts: Settings, span: float | None = None) -> tuple:
-    """The legs of one contact in order (module docstring). With ``span``, the middle's last form
-    runs for ``span`` past its start and there is no unloading (``solver.solve_early``)."""
+def integrate(contact: Contact, opts: Settings, span: float | None = None) -> tuple[Leg, ...]:
+    """The legs of one contact in order (module docstring).
+
+    Parameters
+    ----------
+    contact : Contact
+        The reading of the contact (its forms and events).
+    opts : Settings
+        Options of the solve.
+    span : float, optional
+        With it, the middle's last form runs for ``span`` past its start and there is no
+        unloading (``solver.solve_early``).
+
+    Returns
+    -------
+    tuple of Leg
+        The integrated phases in order.
+
+    Raises
+    ------
+    RuntimeError
+        If a phase fails (``run_leg``) or the middle finds no end of compression.
+    """
     lam, u_form = opts.lam, contact.u_form
     u_cap = min(1.2, lam ** (-1.0 / 3.0)) if lam > 0 else 1.2  # δ_m^{3/2} < 1/λ; δ_m < 1.1 at 0
-    y0 = [0.0, 1.0] + [0.0] * (len(u_form.states) - 2)  # τ = 0, w = 1, extras 0
+    y0: list[float] = [0.0, 1.0] + [0.0] * (len(u_form.states) - 2)  # τ = 0, w = 1, extras 0
     leg = run_leg("loading", u_form, (0.0, u_cap), y0, opts,
                   (_v_half(u_form),) + contact.extra("loading"))
     legs = [leg]
@@ -281,7 +475,7 @@ def integrate(contact: Contact, opts: Settings, span: float | None = None) -> tu
         start = leg.end
         t0 = float(start["tau"])
         last = i == n - 1
-        events = (_compression_end(n > 1),) if i == 0 else ()
+        events: tuple[Event, ...] = (_compression_end(n > 1),) if i == 0 else ()
         if last and span is None:
             events += (_hand_over(form),)
         t_end = t0 + span if last and span is not None else t_cap

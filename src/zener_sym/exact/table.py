@@ -21,11 +21,15 @@ from __future__ import annotations
 
 import functools
 import importlib
+from collections.abc import Mapping, Sequence
+from typing import Any, TypedDict
 
 import numpy as np
+import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
 from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
+from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
 from .table_layout import Layout, parse_array
 
@@ -44,8 +48,34 @@ HISTORY_ATOL = 1e-10
 #: 64 kB each, stay in cache and below the allocator's mmap threshold).
 _BLOCK = BLOCK
 
+#: Lambda-piece indices (``_piece``) and row indices.
+_Index = npt.NDArray[np.intp]
+#: One time piece's history layout (``_history_layout``): per lambda piece the monomial
+#: coefficients [time degree, lambda degree, 2 * sub-piece + field] (None without the piece),
+#: the sub-piece count, the time degree and per lambda piece the degree its coefficients need.
+_PieceLayout = tuple[list[FloatArray | None], int, int, npt.NDArray[np.int_]]
+#: What one time piece's evaluation needs (``history``): the per-line map constants, the
+#: complex coefficients per line, the sub-piece count and the degree.
+_Prep = tuple[dict[str, FloatArray], npt.NDArray[np.complex128], int, int]
 
-def _stack_summary(mats) -> np.ndarray:
+
+class _Tables(TypedDict):
+    """The generated table, arranged for evaluation (``_tables``)."""
+
+    layout: Layout
+    LAM_MIN: float
+    LAM_MAX: float
+    HISTORY_LAM_MAX: float
+    edges: FloatArray
+    log: npt.NDArray[np.bool_]
+    ga: FloatArray
+    gb: FloatArray
+    summary_keys: tuple[str, ...]
+    summary: FloatArray
+    history: dict[str, _PieceLayout]
+
+
+def _stack_summary(mats: Sequence[FloatArray]) -> FloatArray:
     """One zero-padded array [lambda piece, field, degree] (trimming varies)."""
     out = np.zeros((len(mats), max(c.shape[0] for c in mats), max(c.shape[1] for c in mats)))
     for i, c in enumerate(mats):
@@ -53,7 +83,7 @@ def _stack_summary(mats) -> np.ndarray:
     return out
 
 
-def _stack(pieces) -> np.ndarray:
+def _stack(pieces: Sequence[Sequence[str | RealArrayLike]]) -> FloatArray:
     """One zero-padded array [lambda piece, sub-piece, time degree, lambda degree] (trimming
     varies)."""
     mats = [[parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float)
@@ -67,7 +97,7 @@ def _stack(pieces) -> np.ndarray:
     return out
 
 
-def _pad_rows(rows) -> np.ndarray:
+def _pad_rows(rows: Sequence[Sequence[float]]) -> FloatArray:
     """Zero-padded 2-D array from 1-D coefficient tuples of different lengths."""
     out = np.zeros((len(rows), max(len(r) for r in rows)))
     for i, r in enumerate(rows):
@@ -76,7 +106,7 @@ def _pad_rows(rows) -> np.ndarray:
 
 
 @functools.cache
-def _tables():
+def _tables() -> _Tables:
     """The generated table, loaded on first use (importing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
     layout = Layout.of(t)
@@ -96,13 +126,16 @@ def _tables():
             "history": _history_layout(t.HISTORY, log, layout)}
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> float:
     if name in _RANGE:
-        return _tables()[name]
+        t = _tables()
+        return {"LAM_MIN": t["LAM_MIN"], "LAM_MAX": t["LAM_MAX"],
+                "HISTORY_LAM_MAX": t["HISTORY_LAM_MAX"]}[name]
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def _history_layout(history, log, lay) -> dict:
+def _history_layout(history: Mapping[tuple[str, str], Any], log: npt.NDArray[np.bool_],
+                    lay: Layout) -> dict[str, _PieceLayout]:
     """The history coefficients arranged for ``history``: per time piece and lambda piece one
     array [time degree, lambda degree, 2 * sub-piece + field] (field 0: f, 1: I; zero-padded to
     the time piece's largest degree), so the lambda contraction gives per line the pairs
@@ -113,13 +146,13 @@ def _history_layout(history, log, lay) -> dict:
     fast, so the conversion loses no digits that matter, tested against the Chebyshev sum in
     tests/test_exact_fast.py)."""
     n_lam = len(log)
-    layout = {}
+    layout: dict[str, _PieceLayout] = {}
     for piece in lay.TIME_PIECES:
         st = {k: _stack(history[(piece, k)]) for k in lay.HISTORY_KEYS}  # [lp, sub, j, k]
         deg = max(a.shape[2] for a in st.values())
         n_sub = lay.N_SUB[piece]
         conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
-        fields = []
+        fields: list[FloatArray] = []
         for k in lay.HISTORY_KEYS:
             a = np.zeros((n_lam, n_sub, deg, max(x.shape[3] for x in st.values())))
             a[: st[k].shape[0], : st[k].shape[1], : st[k].shape[2], : st[k].shape[3]] = st[k]
@@ -127,7 +160,7 @@ def _history_layout(history, log, lay) -> dict:
         blk = np.stack(fields, axis=2)  # [lp, sub, field, deg, k]
         # per lambda piece [time degree, lambda degree, sub-piece * 2 + field], trimmed in
         # lambda degree; None where the piece has no coefficients (piece M below LOG_FROM)
-        per = []
+        per: list[FloatArray | None] = []
         for p in range(n_lam):
             if not len(history[(piece, "f")][p]):
                 per.append(None)
@@ -145,21 +178,43 @@ def _history_layout(history, log, lay) -> dict:
     return layout
 
 
-def in_range(lam) -> np.ndarray:
-    """Boolean mask: lambda inside the summary table's validated range [LAM_MIN, LAM_MAX]."""
-    lam = np.asarray(lam, dtype=float)
+def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+    """Boolean mask: lambda inside the summary table's validated range [LAM_MIN, LAM_MAX].
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11).
+
+    Returns
+    -------
+    ndarray of bool
+        lam's shape.
+    """
+    lam_a = np.asarray(lam, dtype=float)
     t = _tables()
-    return (lam >= t["LAM_MIN"]) & (lam <= t["LAM_MAX"])
+    return (lam_a >= t["LAM_MIN"]) & (lam_a <= t["LAM_MAX"])
 
 
-def history_in_range(lam) -> np.ndarray:
-    """Boolean mask: lambda inside the history table's range [LAM_MIN, HISTORY_LAM_MAX]."""
-    lam = np.asarray(lam, dtype=float)
+def history_in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+    """Boolean mask: lambda inside the history table's range [LAM_MIN, HISTORY_LAM_MAX].
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11).
+
+    Returns
+    -------
+    ndarray of bool
+        lam's shape.
+    """
+    lam_a = np.asarray(lam, dtype=float)
     t = _tables()
-    return (lam >= t["LAM_MIN"]) & (lam <= t["HISTORY_LAM_MAX"])
+    return (lam_a >= t["LAM_MIN"]) & (lam_a <= t["HISTORY_LAM_MAX"])
 
 
-def _piece(lam: np.ndarray, history: bool = False):
+def _piece(lam: FloatArray, history: bool = False) -> tuple[_Index, FloatArray]:
     """Lambda piece index and the local Chebyshev variable x in [-1, 1] (``history``: among the
     pieces that carry a history table, so lambda = HISTORY_LAM_MAX is the end of the last)."""
     if not np.all(in_range(lam)):
@@ -179,7 +234,8 @@ def _piece(lam: np.ndarray, history: bool = False):
     return i, np.clip((2.0 * g - a - b) / (b - a), -1.0, 1.0)
 
 
-def _core(lam: np.ndarray, history: bool = False) -> dict:
+def _core(lam: FloatArray,
+          history: bool = False) -> tuple[dict[str, FloatArray], _Index, FloatArray]:
     i, x = _piece(lam, history)
     t = _tables()
     c = t["summary"]
@@ -197,19 +253,35 @@ def _core(lam: np.ndarray, history: bool = False) -> dict:
     return v, i, x
 
 
-def summary(lam) -> dict:
+def summary(lam: RealArrayLike) -> dict[str, FloatArray]:
     """Every summary field (see ``models.SUMMARY_FIELDS``) for lambda in [LAM_MIN, LAM_MAX].
 
     xi comes from the energy balance xi = 2 lambda int_F2 (exact for Eq. 10), which keeps its
     relative accuracy as lambda -> 0, where 1 - e^2 would cancel.
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11), 1-D or scalar, in [LAM_MIN, LAM_MAX].
+
+    Returns
+    -------
+    dict of str to ndarray
+        "lam" and the summary fields (delta_m, tau_dc, tau_d, tau_dr, eta, e, F_m, impulse,
+        int_F2, xi).
+
+    Raises
+    ------
+    ValueError
+        For lambda outside the table's range.
     """
-    lam = np.asarray(lam, dtype=float)
-    v, _, _ = _core(lam)
+    lam_a = np.asarray(lam, dtype=float)
+    v, _, _ = _core(lam_a)
     tau_dr = v["tau_d"] - v["tau_dc"]
-    return {"lam": lam, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
+    return {"lam": lam_a, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
             "tau_dr": tau_dr, "eta": tau_dr / v["tau_dc"], "e": v["e"],
             "F_m": v["delta_m"] ** 1.5, "impulse": 1.0 + v["e"], "int_F2": v["int_F2"],
-            "xi": 2.0 * lam * v["int_F2"]}
+            "xi": 2.0 * lam_a * v["int_F2"]}
 
 
 #: Summary fields :func:`summary_derivative` differentiates.
@@ -218,14 +290,17 @@ DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", 
 
 
 @functools.cache
-def _derivative_coefficients() -> np.ndarray:
+def _derivative_coefficients() -> FloatArray:
     """d/dx of every stored summary series, [lambda piece, field, degree] (``chebder``: exact
     on the stored coefficients, no new rounding beyond the recurrence's)."""
     c = _tables()["summary"]
-    return np.polynomial.chebyshev.chebder(c, axis=2) if c.shape[2] > 1 else np.zeros_like(c)
+    if c.shape[2] <= 1:
+        return np.zeros_like(c)
+    # numpy's stubs type chebder's result as any floating array; it is float64 (no copy)
+    return np.asarray(np.polynomial.chebyshev.chebder(c, axis=2), dtype=float)
 
 
-def _series_sum(tl, ci):
+def _series_sum(tl: FloatArray, ci: FloatArray) -> FloatArray:
     """sum_k tl[:, k] ci[:, :, k] in a fixed order (as ``_core``)."""
     vals = tl[:, :1] * ci[:, :, 0]
     for k in range(1, min(tl.shape[1], ci.shape[2])):
@@ -233,7 +308,8 @@ def _series_sum(tl, ci):
     return vals
 
 
-def summary_derivative(lam, field: str = "e", contact_end: str = "delta") -> np.ndarray:
+def summary_derivative(lam: RealArrayLike, field: str = "e",
+                       contact_end: str = "delta") -> FloatArray:
     """d(field)/d(lambda) of the tabulated summary, from the Chebyshev series themselves.
 
     Each stored series is differentiated term by term (``chebder``) and the chain rule applied
@@ -276,28 +352,29 @@ def summary_derivative(lam, field: str = "e", contact_end: str = "delta") -> np.
         raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
                          f"{', '.join(DERIVATIVE_FIELDS)}")
     lam_in = np.asarray(lam, dtype=float)
-    lam = lam_in.reshape(-1)
-    if not np.all(np.isfinite(lam)):
+    lam1 = lam_in.reshape(-1)
+    if not np.all(np.isfinite(lam1)):
         raise ValueError("lambda must be finite")
-    v, i, x = _core(lam)
+    v, i, x = _core(lam1)
     t = _tables()
     d = _derivative_coefficients()
-    tl = np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0))
+    tl = np.asarray(np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0)), dtype=float)
     dx = dict(zip(t["summary_keys"], _series_sum(tl, d[i]).T))
     width = t["gb"][i] - t["ga"][i]
     with np.errstate(divide="ignore", invalid="ignore"):
         # dx/dlambda of the piece's variable (lambda, or ln lambda on the log pieces)
-        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)), 2.0 / width)
+        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam1 > 0, lam1, 1.0)), 2.0 / width)
     dv = {k: dx[k] * scale for k in dx}  # d(stored series)/d(lambda)
     dv["tau_d"] = v["tau_d"] * dv["log_tau_d"]
-    xi = 2.0 * lam * v["int_F2"]
+    xi = 2.0 * lam1 * v["int_F2"]
     small = xi < 0.5
     # below xi = 1/2 from the energy balance xi = 2 lambda int_F2 (no cancellation as
     # lambda -> 0); above, 2 int_F2 and 2 lambda int_F2' nearly cancel (by 1e4 at lambda = 3),
     # so xi' = -2 e e' from ln e's series. e as _core forms it (solver.restitution).
-    dxi_balance = 2.0 * v["int_F2"] + 2.0 * lam * dv["int_F2"]
+    dxi_balance = 2.0 * v["int_F2"] + 2.0 * lam1 * dv["int_F2"]
     de = np.where(small, -dxi_balance / (2.0 * v["e"]), v["e"] * dv["log_e"])
     dxi = np.where(small, dxi_balance, -2.0 * v["e"] * de)
+    out: FloatArray
     if field == "e" or field == "impulse":
         out = de
     elif field == "xi":
@@ -313,7 +390,7 @@ def summary_derivative(lam, field: str = "e", contact_end: str = "delta") -> np.
     return out.reshape(lam_in.shape)
 
 
-def _one_series(lam: np.ndarray, key: str):
+def _one_series(lam: FloatArray, key: str) -> tuple[FloatArray, FloatArray]:
     """One stored summary series and its d/dlambda at lam (1-D): only that series is summed
     (the inverse's Newton steps need one or two of the six)."""
     t = _tables()
@@ -330,22 +407,40 @@ def _one_series(lam: np.ndarray, key: str):
     return val, der * scale
 
 
-def log_quantity(lam, quantity: str):
-    """(ln q, d ln q / d lambda) for q = e (from the stored ln e, the form ``summary`` uses
-    where xi >= 1/2), xi = 2 lambda int_F2 (exact for Eq. 10; lambda > 0) or tau_d, each from
-    the one series it needs. For :mod:`zener_sym.exact.inverse`."""
-    lam = np.asarray(lam, dtype=float).reshape(-1)
+def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
+    """(ln q, d ln q / d lambda) from the one series q needs, for :mod:`zener_sym.exact.inverse`.
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda (Eq. 11) in [LAM_MIN, LAM_MAX] (> 0 for xi); flattened.
+    quantity : str
+        "e" (from the stored ln e, the form ``summary`` uses where xi >= 1/2), "xi" =
+        2 lambda int_F2 (exact for Eq. 10) or "tau_d".
+
+    Returns
+    -------
+    tuple of ndarray
+        ln q and d ln q / d lambda, 1-D.
+
+    Raises
+    ------
+    ValueError
+        For an unknown quantity or lambda outside the table's range.
+    """
+    lam1 = np.asarray(lam, dtype=float).reshape(-1)
     if quantity == "e":
-        return _one_series(lam, "log_e")
+        return _one_series(lam1, "log_e")
     if quantity == "tau_d":
-        return _one_series(lam, "log_tau_d")
+        return _one_series(lam1, "log_tau_d")
     if quantity == "xi":
-        f, df = _one_series(lam, "int_F2")
-        return np.log(2.0 * lam * f), 1.0 / lam + df / f
+        f, df = _one_series(lam1, "int_F2")
+        return np.log(2.0 * lam1 * f), 1.0 / lam1 + df / f
     raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
 
 
-def _piece_coefficients(per, ip, tl_all, deg, n_sub):
+def _piece_coefficients(per: Sequence[FloatArray | None], ip: _Index, tl_all: FloatArray,
+                        deg: int, n_sub: int) -> npt.NDArray[np.complex128]:
     """[time degree, line * sub-piece], complex: one time piece's monomial coefficients per line
     (real part f's, imaginary part I's), sum_k C[j, k, 2 s + field] T_k(x_lambda). lu is sorted,
     so each lambda piece's lines are one slice; one stacked matrix product per lambda piece
@@ -363,7 +458,8 @@ def _piece_coefficients(per, ip, tl_all, deg, n_sub):
     return out.reshape(deg, -1).view(np.complex128)
 
 
-def _scaled_maps(name, k, lu, log, v, tau_s):
+def _scaled_maps(name: str, k: int, lu: FloatArray, log: npt.NDArray[np.bool_],
+                 v: Mapping[str, FloatArray], tau_s: FloatArray) -> dict[str, FloatArray]:
     """Per-line constants of piece ``name``'s reduced time times k, z = k y (``table_layout``:
     C z = sqrt(a t); B z = sqrt(a (tau_d - t)); A and M z = a (u(t) - u0) with
     u = ln(1 + (t - s) i1) + (t - s) i3 - ln(1 + (e - t) i2) from ``lin_log``, i = 1/c (0 for an
@@ -386,7 +482,8 @@ def _scaled_maps(name, k, lu, log, v, tau_s):
     return out
 
 
-def _reduced_time(name, m, t, li):
+def _reduced_time(name: str, m: Mapping[str, FloatArray], t: FloatArray,
+                  li: _Index) -> tuple[FloatArray, FloatArray | None]:
     """z = k y, the reduced time of piece ``name`` times its sub-piece count, at times t on the
     lines li (``_scaled_maps``' constants gathered per point), and d = tau_d on the lines (piece
     B's factor, None elsewhere)."""
@@ -414,7 +511,8 @@ def _reduced_time(name, m, t, li):
     return z, None
 
 
-def _piece_values(name, prep, t, li, lu):
+def _piece_values(name: str, prep: _Prep, t: FloatArray, li: _Index,
+                  lu: FloatArray) -> tuple[FloatArray, FloatArray]:
     """delta and the impulse at times t (all in time piece ``name``) on the lines li."""
     m, cT, k, nd = prep
     z, d = _reduced_time(name, m, t, li)
@@ -433,16 +531,15 @@ def _piece_values(name, prep, t, li, lu):
     if name == "C":
         g *= t
     elif name == "B":
+        assert d is not None  # piece B's factor tau_d (_reduced_time)
         d -= t
         g *= d
     return g, i
 
 
-def history(lam, tau) -> dict:
+def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
     """delta, impulse, velocity (1 - I) and force (delta^{3/2}) at (lam, tau), same shapes.
 
-    lam and tau must already be broadcast to one shape; lambda in [LAM_MIN, HISTORY_LAM_MAX],
-    tau >= 0.
     The lambda direction is contracted once per distinct lambda and time piece; each time point
     then costs its piece's map, one polynomial of degree <= 15 per field (Horner) and an
     exponential. The points of each time piece are evaluated in blocks of ``_BLOCK``: per-point
@@ -450,35 +547,52 @@ def history(lam, tau) -> dict:
     depends on how the allocator was last used) than in arithmetic. When lambda is a broadcast
     column (one lambda per line of tau), points are assigned to lines and pieces by
     broadcasting against each line's bounds, without a per-point sort.
+
+    Parameters
+    ----------
+    lam, tau : array_like
+        lambda (Eq. 11) in [LAM_MIN, HISTORY_LAM_MAX] and times >= 0, already broadcast to one
+        shape.
+
+    Returns
+    -------
+    dict of str to ndarray
+        "delta", "impulse", "velocity", "force", each of that shape.
+
+    Raises
+    ------
+    ValueError
+        For lambda outside the history table's range.
     """
-    lam = np.asarray(lam, dtype=float)
-    tau = np.asarray(tau, dtype=float)
-    shape = tau.shape
+    lam_a = np.asarray(lam, dtype=float)
+    tau_a = np.asarray(tau, dtype=float)
+    shape = tau_a.shape
     n_col = None  # points per line of tau when lambda is one column (a line each)
-    if lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(
-            lam, np.broadcast_to(lam[..., :1], lam.shape)):
+    if lam_a.ndim >= 1 and lam_a.shape[-1] > 1 and np.array_equal(
+            lam_a, np.broadcast_to(lam_a[..., :1], lam_a.shape)):
         # one lambda per line of tau (a broadcast column): sort the lines, not every point
-        lu, line = np.unique(lam[..., 0].ravel(), return_inverse=True)
-        n_col = lam.shape[-1]
+        lu, line = np.unique(lam_a[..., 0].ravel(), return_inverse=True)
+        n_col = lam_a.shape[-1]
     else:
-        lu, inv = np.unique(lam.ravel(), return_inverse=True)
+        lu, inv = np.unique(lam_a.ravel(), return_inverse=True)
     if not np.all(history_in_range(lu)):
         bad = float(lu[~history_in_range(lu)][0])
         raise ValueError(f"lambda = {bad!r} is outside the exact history table's range "
                          f"[{_tables()['LAM_MIN']:g}, {_tables()['HISTORY_LAM_MAX']:g}]; "
                          "integrate instead (backend='scipy')")
-    tau = tau.ravel()
+    tau_f = tau_a.ravel()
     v, ip, xl = _core(lu, history=True)
     log = _tables()["log"][ip]
     lay = _tables()["layout"]
     tau_s = lay.split_time(lu, log, v["tau_dc"], v["tau_w0"])
-    piece = _time_piece(tau, (tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"]),
+    piece = _time_piece(tau_f, (tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"]),
                         line if n_col is not None else inv, n_col)
-    out = field_buffers(("delta", "impulse", "velocity", "force"), tau.shape)
+    out = field_buffers(("delta", "impulse", "velocity", "force"), tau_f.shape)
     layout = _tables()["history"]
-    tl_all = np.polynomial.chebyshev.chebvander(xl, max(
-        c.shape[1] for per, *_ in layout.values() for c in per if c is not None) - 1)
+    k_max = max(c.shape[1] for per, *_ in layout.values() for c in per if c is not None)
+    tl_all = np.asarray(np.polynomial.chebyshev.chebvander(xl, k_max - 1), dtype=float)
     imp_end = 1.0 + v["e"]  # after the contact the impulse keeps its final value
+    prep: _Prep | None = None
     for n, name in enumerate((*lay.TIME_PIECES, None)):
         if name is not None:
             if not np.any(piece == n):
@@ -488,7 +602,7 @@ def history(lam, tau) -> dict:
                 per, ip, tl_all, deg, k), k, int(need[ip].max()))
         # the piece's points, found chunk by chunk of the grid (no index array of the grid's
         # size: the call's peak memory decides whether glibc keeps it for the next call)
-        for c0 in range(0, tau.size, 4 * _BLOCK):
+        for c0 in range(0, tau_f.size, 4 * _BLOCK):
             at_chunk = np.flatnonzero(piece[c0:c0 + 4 * _BLOCK] == n)
             at_chunk += c0
             for s in range(0, at_chunk.size, _BLOCK):
@@ -499,14 +613,16 @@ def history(lam, tau) -> dict:
                     out["delta"][at] = 0.0
                     out["impulse"][at] = imp_end.take(li, mode="clip")
                 else:
+                    assert prep is not None  # made above for this piece
                     out["delta"][at], out["impulse"][at] = _piece_values(
-                        name, prep, tau.take(at, mode="clip"), li, lu)
+                        name, prep, tau_f.take(at, mode="clip"), li, lu)
         prep = None  # freed before the next piece's coefficients are made
     _derived_fields(out)
     return {key: a.reshape(shape) for key, a in out.items()}
 
 
-def _time_piece(tau, bounds, index, n_col):
+def _time_piece(tau: FloatArray, bounds: tuple[FloatArray, ...], index: _Index,
+                n_col: int | None) -> npt.NDArray[np.int8]:
     """The time piece of each point (int8, flat): 0 C, 1 A, 2 M (empty for lambda <= LOG_FROM,
     tau_s = tau_w0), 3 B, 4 after the contact, from the bounds (tau_s, tau_w0, tau_d, tau_dc)
     per distinct lambda; ``index`` maps lines (when ``n_col`` points share a lambda per line)
@@ -527,7 +643,7 @@ def _time_piece(tau, bounds, index, n_col):
     return piece.ravel()
 
 
-def _derived_fields(out) -> None:
+def _derived_fields(out: dict[str, FloatArray]) -> None:
     """force = delta^{3/2} and velocity = 1 - impulse, in place, block by block (per-point
     temporaries stay cache-sized, as in ``history``)."""
     for s in range(0, out["delta"].size, _BLOCK):

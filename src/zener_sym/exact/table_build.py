@@ -53,6 +53,8 @@ from __future__ import annotations
 
 import functools
 import pathlib
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypedDict
 
 import numpy as np
 
@@ -60,7 +62,30 @@ from ..codegen import inputs_hash
 from ..codegen.tables import float_tuple, table_module
 from ..numerics.chebyshev import (cheb_coefficients, cheb_nodes, coefficient_difference,
                                   trim_trailing)
+from ..typing import FloatArray, RealArrayLike
 from .table_layout import Layout, lin_log, parse_array
+
+if TYPE_CHECKING:  # the solver is imported where a table is built (scipy stays unloaded till then)
+    from .phases import Leg
+    from .solver import ExactSolution
+
+#: One lambda node's data: summary values by name, and per (time piece, field) the history
+#: samples [sub-piece, point] (with (piece, "delta") the sub-pieces' largest delta).
+NodeData = dict[str | tuple[str, str], Any]
+#: (delta, w) of a solution at an array of times.
+HistoryFunction = Callable[[FloatArray], tuple[FloatArray, FloatArray]]
+
+
+class Tables(TypedDict):
+    """What ``build_tables`` returns (and ``render`` writes)."""
+
+    #: key -> per lambda piece one 1-D Chebyshev series
+    summary: dict[str, list[FloatArray]]
+    #: (time piece, field) -> per lambda piece one [time degree, lambda degree] matrix per
+    #: sub-piece (an empty tuple where the piece has no such time piece)
+    history: dict[tuple[str, str], list[tuple[FloatArray, ...]]]
+    #: the same keys: per lambda piece the sub-pieces' weights
+    weights: dict[tuple[str, str], list[tuple[float, ...]]]
 
 #: Breakpoints of the lambda pieces: the summary and history tables cover [0, 1000].
 LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0, 1000.0)
@@ -122,14 +147,40 @@ HISTORY_KEYS = LAYOUT.HISTORY_KEYS
 TIME_PIECES = LAYOUT.TIME_PIECES
 
 
-def time_nodes(piece: str, y: np.ndarray, tau_dc: float, tau_w0: float, tau_d: float,
-               params=None) -> np.ndarray:
-    """tau at the reduced time y in [0, 1] of one time piece (see the module docstring); pieces
-    A and M invert ``lin_log`` (``params`` from ``Layout.map_params``) by bisection (monotone)."""
+def time_nodes(piece: str, y: FloatArray, tau_dc: float, tau_w0: float, tau_d: float,
+               params: Sequence[float] | None = None) -> FloatArray:
+    """tau at the reduced time y in [0, 1] of one time piece (see the module docstring).
+
+    Pieces A and M invert ``lin_log`` (``params`` from ``Layout.map_params``) by bisection
+    (monotone).
+
+    Parameters
+    ----------
+    piece : str
+        "C", "A", "M" or "B".
+    y : ndarray
+        Reduced times in [0, 1].
+    tau_dc, tau_w0, tau_d : float
+        End of compression, rest time (w = 0) and end of contact.
+    params : sequence of float, optional
+        (start, end, c1, c2, c3) of ``lin_log``; needed for pieces A and M.
+
+    Returns
+    -------
+    ndarray
+        tau, y's shape.
+
+    Raises
+    ------
+    ValueError
+        For piece A or M without ``params``.
+    """
     if piece == "C":
         return tau_dc * y * y
     if piece == "B":
         return tau_d - (tau_d - tau_w0) * y * y
+    if params is None:
+        raise ValueError(f"time_nodes: piece {piece!r} needs the map's params (Layout.map_params)")
     start, end = params[0], params[1]
     lo, hi = np.full(y.shape, start), np.full(y.shape, end)
     for _ in range(200):
@@ -138,26 +189,39 @@ def time_nodes(piece: str, y: np.ndarray, tau_dc: float, tau_w0: float, tau_d: f
             break
         below = lin_log(mid, *params) < y
         lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
-    return 0.5 * (lo + hi)
+    tau: FloatArray = 0.5 * (lo + hi)
+    return tau
 
 
-def sub_nodes(piece: str) -> np.ndarray:
-    """Reduced times y of the Chebyshev points of every sub-piece of a time piece, [sub, point]."""
+def sub_nodes(piece: str) -> FloatArray:
+    """Reduced times y of the Chebyshev points of every sub-piece of a time piece.
+
+    Parameters
+    ----------
+    piece : str
+        A key of ``N_SUB``.
+
+    Returns
+    -------
+    ndarray
+        [sub-piece, point].
+    """
     k, x = N_SUB[piece], cheb_nodes(N_TIME[piece])
     return (np.arange(k)[:, None] + (x[None, :] + 1.0) / 2.0) / k
 
 
-def _rest_time(sol) -> float:
+def _rest_time(sol: ExactSolution) -> float:
     """tau_w0 in (tau_dc, tau_d) where the relative velocity w = 1 - I vanishes (w' = -F < 0)."""
     from scipy.optimize import brentq
 
-    def w(t):
+    def w(t: float) -> float:
         return float(sol.history(np.array([t]))["velocity"][0])
 
-    return brentq(w, sol.tau_dc, sol.tau_d, xtol=1e-15, rtol=1e-15, maxiter=200)
+    tau_w0: float = brentq(w, sol.tau_dc, sol.tau_d, xtol=1e-15, rtol=1e-15, maxiter=200)
+    return tau_w0
 
 
-def _from_steps(leg, t: np.ndarray) -> np.ndarray:
+def _from_steps(leg: Leg, t: FloatArray) -> FloatArray:
     """States of a tau-phase (a ``phases.Leg``) at the times t, integrated afresh with the phase's
     own equations from the last accepted step before each t (all points at once, DOP853 at RTOL
     in s = (t - t_k) / (t_k+1 - t_k)).
@@ -174,54 +238,99 @@ def _from_steps(leg, t: np.ndarray) -> np.ndarray:
     dt = t - ts[k]
     n = y0.shape[0]
 
-    def f(x, y):
-        return (np.stack(terms(x, y.reshape(n, -1))) * dt).ravel()
+    def f(x: float, y: FloatArray) -> FloatArray:
+        rates: FloatArray = (np.stack(terms(x, y.reshape(n, -1))) * dt).ravel()
+        return rates
 
     r = solve_ivp(f, (0.0, 1.0), y0.ravel(), method="DOP853", rtol=RTOL, atol=1e-300)
     if r.status != 0:
         raise RuntimeError(f"table build: re-integration from the steps failed at lambda = "
                            f"{leg.form.lam}")
-    return r.y[:, -1].reshape(n, -1)
+    states: FloatArray = r.y[:, -1].reshape(n, -1)
+    return states
 
 
-def node_history(s, tau: np.ndarray):
-    """(delta, w) of the solution ``s`` (``solver.solve`` or ``solve_early``'s) at tau, the
-    tau-phases from their steps (``_from_steps``), the rest from ``s.history``."""
-    tau = np.asarray(tau, dtype=float)
-    delta, w = np.empty(tau.shape), np.empty(tau.shape)
-    where = s.leg_of(tau)
-    rest = np.ones(tau.shape, dtype=bool)
+def node_history(s: ExactSolution, tau: RealArrayLike) -> tuple[FloatArray, FloatArray]:
+    """(delta, w) of a solution at tau, the tau-phases from their steps (``_from_steps``).
+
+    Parameters
+    ----------
+    s : ExactSolution
+        From ``solver.solve`` or ``solve_early``; the u-phases are read from ``s.history``.
+    tau : array_like
+        Times inside the solution.
+
+    Returns
+    -------
+    tuple of ndarray
+        delta and w = 1 - I, tau's shape.
+    """
+    t = np.asarray(tau, dtype=float)
+    delta, w = np.empty(t.shape), np.empty(t.shape)
+    where = s.leg_of(t)
+    rest = np.ones(t.shape, dtype=bool)
     for i, leg in enumerate(s.legs):
         m = where == i
         if leg.form.kind == "tau" and m.any():
-            y = _from_steps(leg, tau[m])
+            y = _from_steps(leg, t[m])
             delta[m], w[m] = y[0], y[leg.form.w_row]
             rest &= ~m
     if rest.any():
-        h = s.history(tau[rest])
+        h = s.history(t[rest])
         delta[rest], w[rest] = h["delta"], h["velocity"]
     return delta, w
 
 
 def is_log_piece(a: float) -> bool:
-    """True for a lambda piece [a, b] tabulated in ln(lambda) (summary only)."""
+    """True for a lambda piece [a, b] tabulated in ln(lambda).
+
+    Parameters
+    ----------
+    a : float
+        The piece's lower end.
+
+    Returns
+    -------
+    bool
+    """
     return a >= LOG_FROM
 
 
 @functools.cache
-def universal_orbit():
-    """The universal orbit as the solution at LAM_U, its rest time and C = e lambda^5."""
+def universal_orbit() -> tuple[ExactSolution, float, float]:
+    """The universal orbit as the solution at LAM_U, its rest time and C = e lambda^5.
+
+    Returns
+    -------
+    tuple
+        (the ``ExactSolution`` at LAM_U, its tau_w0, C).
+    """
     from . import solver as exact
 
     U = exact.solve(LAM_U, rtol=U_RTOL)
     return U, _rest_time(U), -U.w_end * LAM_U**5
 
 
-def large_node(lam: float, history: bool = True) -> dict:
+def large_node(lam: float, history: bool = True) -> NodeData:
     """Summary values (and history samples) of one large lambda from its early part and the
-    universal orbit: before tau_M = tau_dc + MATCH_DECAYS / rate its own solve, after it the
-    orbit, delta = (LAM_U / lambda)^4 delta_U and w = (LAM_U / lambda)^5 w_U at
-    tau_U = t_U + (LAM_U / lambda) (tau - tau_M)."""
+    universal orbit.
+
+    Before tau_M = tau_dc + MATCH_DECAYS / rate its own solve, after it the orbit,
+    delta = (LAM_U / lambda)^4 delta_U and w = (LAM_U / lambda)^5 w_U at
+    tau_U = t_U + (LAM_U / lambda) (tau - tau_M).
+
+    Parameters
+    ----------
+    lam : float
+        lambda (Eq. 11) above LOG_FROM.
+    history : bool
+        Whether to sample the history too.
+
+    Returns
+    -------
+    dict
+        The node's data (``NodeData``).
+    """
     from scipy.optimize import brentq
 
     from . import solver as exact
@@ -231,21 +340,21 @@ def large_node(lam: float, history: bool = True) -> dict:
     r = exact.solve_early(lam, MATCH_DECAYS / rate, rtol=RTOL)
     target = (lam / LAM_U) ** 5 * r["w"]  # the same W = lambda^5 w on the orbit
 
-    def w_U(t):
+    def w_U(t: float) -> float:
         return float(U.history(np.array([t]))["velocity"][0]) - target
 
-    t_U = brentq(w_U, U.tau_dc, tau_w0_U, xtol=1e-14, rtol=8.9e-16, maxiter=300)
+    t_U: float = brentq(w_U, U.tau_dc, tau_w0_U, xtol=1e-14, rtol=8.9e-16, maxiter=300)
     scale = lam / LAM_U  # tau = lambda T
     tau_d = r["tau"] + scale * (U.tau_d - t_U)
     tau_w0 = r["tau"] + scale * (tau_w0_U - t_U)
     e = C / lam**5
-    out = {"delta_m": r["delta_m"], "tau_dc": r["tau_dc"], "log_tau_d": np.log(tau_d),
+    out: NodeData = {"delta_m": r["delta_m"], "tau_dc": r["tau_dc"], "log_tau_d": np.log(tau_d),
            "log_e": np.log(e), "int_F2": (1.0 - e * e) / (2.0 * lam),
            "rest_over_lam": (tau_w0 - r["tau_dc"]) / lam}
     if history:
         early = r["solution"]
 
-        def hist(tau):
+        def hist(tau: FloatArray) -> tuple[FloatArray, FloatArray]:
             delta, w = np.empty(tau.shape), np.empty(tau.shape)
             m = tau < r["tau"]
             if m.any():
@@ -259,18 +368,31 @@ def large_node(lam: float, history: bool = True) -> dict:
     return out
 
 
-def piece_nodes(a: float, b: float) -> np.ndarray:
-    """The lambda nodes of the piece [a, b] (Chebyshev points in lambda or in ln lambda)."""
+def piece_nodes(a: float, b: float) -> FloatArray:
+    """The lambda nodes of the piece [a, b] (Chebyshev points in lambda or in ln lambda).
+
+    Parameters
+    ----------
+    a, b : float
+        The piece's ends.
+
+    Returns
+    -------
+    ndarray
+        N_LAM nodes.
+    """
     x = cheb_nodes(N_LAM)
     if is_log_piece(a):
-        return np.exp(np.log(a) + (np.log(b) - np.log(a)) * (x + 1.0) / 2.0)
+        nodes: FloatArray = np.exp(np.log(a) + (np.log(b) - np.log(a)) * (x + 1.0) / 2.0)
+        return nodes
     return a + (b - a) * (x + 1.0) / 2.0
 
 
-def _history_samples(hist, tau_dc, tau_w0, tau_d, lam, log_piece) -> dict:
+def _history_samples(hist: HistoryFunction, tau_dc: float, tau_w0: float, tau_d: float,
+                     lam: float, log_piece: bool) -> NodeData:
     """{(piece, "f"/"I"): [sub, point]} from hist(tau) -> (delta, w) at the sub-pieces' nodes."""
     tau_s = float(LAYOUT.split_time(lam, log_piece, tau_dc, tau_w0))
-    out = {}
+    out: NodeData = {}
     for piece in TIME_PIECES:
         if piece == "M" and not log_piece:
             continue
@@ -292,13 +414,24 @@ def _history_samples(hist, tau_dc, tau_w0, tau_d, lam, log_piece) -> dict:
     return out
 
 
-def node_data(lam: float) -> dict:
-    """Summary values and history samples of one lambda (lambda > 0: nodes never include 0)."""
+def node_data(lam: float) -> NodeData:
+    """Summary values and history samples of one lambda (lambda > 0: nodes never include 0).
+
+    Parameters
+    ----------
+    lam : float
+        lambda (Eq. 11), 0 < lam <= LOG_FROM.
+
+    Returns
+    -------
+    dict
+        The node's data (``NodeData``).
+    """
     from . import solver as exact
 
     s = exact.solve(lam, rtol=RTOL)
     tau_w0 = _rest_time(s)
-    out = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
+    out: NodeData = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
            "log_e": np.log(-s.w_end), "int_F2": s.int_F2,
            "rest_over_lam": (tau_w0 - s.tau_dc) / lam}
     out.update(_history_samples(lambda t: node_history(s, t), s.tau_dc, tau_w0, s.tau_d, lam,
@@ -306,15 +439,22 @@ def node_data(lam: float) -> dict:
     return out
 
 
-def build_tables() -> dict:
+def build_tables() -> Tables:
     """All coefficients: {"summary": {key: [1-D per lambda piece]}, "history": {(piece, key): [2-D]}}.
 
     history[(piece, key)] holds, per lambda piece up to HISTORY_TO, one 2-D array per sub-piece
     indexed [time degree, lambda degree].
+
+    Returns
+    -------
+    Tables
+        summary, history and the history's weights.
     """
-    summary = {k: [] for k in SUMMARY_KEYS}
-    history = {(p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
-    weights = {key: [] for key in history}  # per lambda piece, per sub-piece
+    summary: dict[str, list[FloatArray]] = {k: [] for k in SUMMARY_KEYS}
+    history: dict[tuple[str, str], list[tuple[FloatArray, ...]]] = {
+        (p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
+    # per lambda piece, per sub-piece
+    weights: dict[tuple[str, str], list[tuple[float, ...]]] = {key: [] for key in history}
     for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:]):
         lams = piece_nodes(a, b)
         if is_log_piece(a):
@@ -337,15 +477,29 @@ def build_tables() -> dict:
     return {"summary": summary, "history": history, "weights": weights}
 
 
-def history_coefficients(data: list, key: tuple) -> tuple:
-    """One lambda piece's history series of ``key`` = (time piece, field) from its node data
-    (the plate's and the force-free end's tables): per sub-piece one [time degree, lambda
-    degree] Chebyshev matrix, trimmed where it moves the field by less than HISTORY_TRIM, and
-    the sub-pieces' weights."""
+def history_coefficients(data: Sequence[NodeData], key: tuple[str, str]
+                         ) -> tuple[tuple[FloatArray, ...], tuple[float, ...]]:
+    """One lambda piece's history series of ``key`` = (time piece, field) from its node data.
+
+    Shared by the plate's and the force-free end's tables.
+
+    Parameters
+    ----------
+    data : sequence of dict
+        The piece's node data (``NodeData``), one per lambda node.
+    key : tuple of str
+        (time piece, field).
+
+    Returns
+    -------
+    tuple
+        Per sub-piece one [time degree, lambda degree] Chebyshev matrix, trimmed where it moves
+        the field by less than HISTORY_TRIM, and the sub-pieces' weights.
+    """
     vals = np.array([d[key] for d in data])  # [lambda node, sub, time node]
     c = cheb_coefficients(cheb_coefficients(vals, axis=2), axis=0)
     if key[1] == "f":  # c moves delta by c delta: weighed by delta / delta_m
-        wt = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
+        wt: FloatArray = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
     else:
         wt = np.ones(c.shape[1])
     mats = tuple(trim_trailing(c[:, j, :].T, np.abs(c[:, j, :].T) * wt[j] > HISTORY_TRIM)
@@ -354,20 +508,25 @@ def history_coefficients(data: list, key: tuple) -> tuple:
 
 
 def input_files() -> list[pathlib.Path]:
-    """The sources the table is built from (its inputs hash): this builder, the layout it
-    writes and the solver it samples (with its phase driver)."""
+    """The sources the table is built from (its inputs hash).
+
+    Returns
+    -------
+    list of pathlib.Path
+        This builder, the layout it writes and the solver it samples (with its phase driver).
+    """
     here = pathlib.Path(__file__).resolve().parent
     return [here / name for name in ("table_build.py", "table_layout.py", "solver.py",
                                      "phases.py")]
 
 
-def _fmt_q(a: np.ndarray, quantum: float) -> str:
+def _fmt_q(a: FloatArray, quantum: float) -> str:
     """A 2-D array as the string "rows cols v v ...", each number with the digits that resolve
     ``quantum`` (at most 16). A string rather than a tuple literal: Python compiles a module of
     80 000 float literals in about a second (every process, where bytecode is not cached),
     numpy parses the strings in milliseconds (``parse_array``)."""
-    def one(v):
-        v = float(v)
+    def one(value: float) -> str:
+        v = float(value)
         if abs(v) < quantum:
             return "0"
         n = int(np.clip(np.floor(np.log10(abs(v))) - np.floor(np.log10(quantum)) + 1, 1, 16))
@@ -376,17 +535,35 @@ def _fmt_q(a: np.ndarray, quantum: float) -> str:
     return f"{a.shape[0]} {a.shape[1]} " + " ".join(one(v) for v in a.ravel())
 
 
-def _fmt(a: np.ndarray, indent: str) -> str:
+def _fmt(a: FloatArray, indent: str) -> str:
     if a.ndim == 1:
-        return float_tuple(a, 15)
+        text: str = float_tuple(a, 15)
+        return text
     rows = [indent + "    " + _fmt(r, "") + "," for r in a]
     return "(\n" + "\n".join(rows) + "\n" + indent + ")"
 
 
-def table_lines(t: dict, summary_keys, history_comment) -> list[str]:
-    """The SUMMARY and HISTORY assignments of a generated exact table (the plate's and the
-    force-free end's): summary series per lambda piece, history matrices per lambda piece and
-    sub-piece, quantised by their weights."""
+def table_lines(t: Mapping[str, Any], summary_keys: Sequence[str],
+                history_comment: Sequence[str]) -> list[str]:
+    """The SUMMARY and HISTORY assignments of a generated exact table.
+
+    Shared by the plate's and the force-free end's: summary series per lambda piece, history
+    matrices per lambda piece and sub-piece, quantised by their weights.
+
+    Parameters
+    ----------
+    t : mapping
+        The tables (``Tables``: summary, history, weights).
+    summary_keys : sequence of str
+        The summary series, in order.
+    history_comment : sequence of str
+        Comment lines written before HISTORY.
+
+    Returns
+    -------
+    list of str
+        The lines, from the SUMMARY entries to HISTORY's closing brace.
+    """
     lines = []
     for k in summary_keys:
         lines.append(f"    {k!r}: (")
@@ -405,8 +582,19 @@ def table_lines(t: dict, summary_keys, history_comment) -> list[str]:
     return lines + ["}"]
 
 
-def render(tables: dict | None = None) -> str:
-    """Text of ``generated/exact_table.py``."""
+def render(tables: Tables | None = None) -> str:
+    """Text of ``generated/exact_table.py``.
+
+    Parameters
+    ----------
+    tables : Tables, optional
+        Built tables (``build_tables``, which is called without them).
+
+    Returns
+    -------
+    str
+        The module's text.
+    """
     import scipy
 
     t = build_tables() if tables is None else tables
@@ -424,21 +612,45 @@ def render(tables: dict | None = None) -> str:
                   f"rtol {RTOL:g}; `zener-sym exact-table --check` rebuilds and compares "
                   "numerically (the node values come from a floating-point integrator, so the "
                   "bytes are not reproducible across machines).")
-    return table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
+    text: str = table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
+    return text
 
 
 def table_path() -> pathlib.Path:
+    """Where the generated table lives.
+
+    Returns
+    -------
+    pathlib.Path
+        ``generated/exact_table.py``.
+    """
     from ..codegen import generated_dir
 
-    return generated_dir() / "exact_table.py"
+    path: pathlib.Path = generated_dir() / "exact_table.py"
+    return path
 
 
-def compare(stored: dict, fresh: dict) -> list[str]:
-    """Differences beyond CHECK_RTOL between two tables, as readable lines (empty: they agree)."""
+def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
+    """Differences beyond CHECK_RTOL between two tables.
+
+    Parameters
+    ----------
+    stored : mapping
+        The generated module's SUMMARY and HISTORY (history as strings), as "summary" and
+        "history".
+    fresh : mapping
+        Rebuilt tables (``Tables``).
+
+    Returns
+    -------
+    list of str
+        Readable lines, one per difference (empty: they agree).
+    """
     bad = []
 
-    def flat(arrays):  # summary: one array per lambda piece; history: one per (piece, sub-piece)
-        out = []
+    def flat(arrays: Sequence[Any]) -> list[FloatArray]:
+        # summary: one array per lambda piece; history: one per (piece, sub-piece)
+        out: list[FloatArray] = []
         for c in arrays:
             if isinstance(c, tuple) and not c:  # no piece M below LOG_FROM
                 continue
@@ -450,7 +662,7 @@ def compare(stored: dict, fresh: dict) -> list[str]:
                 out.append(c)
         return out
 
-    def flat_w(weights):
+    def flat_w(weights: Sequence[Sequence[float]]) -> list[float]:
         return [w for subs in weights for w in subs]
 
     for kind in ("summary", "history"):

@@ -9,8 +9,12 @@ imports the builder. The time pieces and their maps are described in the builder
 from __future__ import annotations
 
 import dataclasses
+from types import ModuleType
 
 import numpy as np
+import numpy.typing as npt
+
+from ..typing import FloatArray, RealArrayLike
 
 __all__ = ["Layout", "lin_log", "parse_array"]
 
@@ -23,7 +27,7 @@ class Layout:
     """
 
     #: Breakpoints of the lambda pieces.
-    LAM_PIECES: tuple
+    LAM_PIECES: tuple[float, ...]
     #: Pieces starting at or above this lambda use ln(lambda) as their Chebyshev variable.
     LOG_FROM: float
     #: The history tables end here.
@@ -36,54 +40,137 @@ class Layout:
     S_ORBIT: float
     S_TRANSIENT: float
     #: Sub-pieces (equal parts of the reduced time y) per time piece.
-    N_SUB: dict
+    N_SUB: dict[str, int]
     #: The time pieces, in the order of time (a point's piece index counts in this order).
-    TIME_PIECES: tuple = ("C", "A", "M", "B")
+    TIME_PIECES: tuple[str, ...] = ("C", "A", "M", "B")
     #: The tabulated history fields: f (delta's log-part) and the impulse I.
-    HISTORY_KEYS: tuple = ("f", "I")
+    HISTORY_KEYS: tuple[str, ...] = ("f", "I")
 
     @classmethod
-    def of(cls, module) -> "Layout":
-        """The layout written into a generated table module (its upper-case names)."""
+    def of(cls, module: ModuleType) -> "Layout":
+        """The layout written into a generated table module (its upper-case names).
+
+        Parameters
+        ----------
+        module : module
+            The generated table module (``zener_sym.generated.exact_table``).
+
+        Returns
+        -------
+        Layout
+        """
         return cls(**{f.name: getattr(module, f.name) for f in dataclasses.fields(cls)})
 
     def assignments(self) -> list[str]:
-        """``NAME = value`` lines of a generated module, in field order (read back by ``of``)."""
+        """``NAME = value`` lines of a generated module, in field order (read back by ``of``).
+
+        Returns
+        -------
+        list of str
+            One line per field.
+        """
         return [f"{f.name} = {getattr(self, f.name)!r}" for f in dataclasses.fields(self)]
 
-    def split_time(self, lam, log_piece, tau_dc, tau_w0):
-        """tau_s, the end of piece A and start of piece M: tau_w0 for lambda <= LOG_FROM (no
-        piece M), tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)) above."""
-        lam = np.asarray(lam, dtype=float)
+    def split_time(self, lam: RealArrayLike, log_piece: bool | npt.NDArray[np.bool_],
+                   tau_dc: float | FloatArray, tau_w0: float | FloatArray) -> FloatArray:
+        """tau_s, the end of time piece A and the start of piece M.
+
+        tau_w0 for lambda <= LOG_FROM (no piece M), tau_dc + lambda (S_ORBIT + S_TRANSIENT
+        lambda^(-5/3)) above.
+
+        Parameters
+        ----------
+        lam : array_like
+            lambda (Eq. 11).
+        log_piece : bool or ndarray of bool
+            Whether lambda lies on a ln-lambda piece (above LOG_FROM).
+        tau_dc, tau_w0 : float or ndarray
+            End of compression and the time where w = 1 - I vanishes.
+
+        Returns
+        -------
+        ndarray
+            tau_s, the broadcast shape.
+        """
+        lam_a = np.asarray(lam, dtype=float)
         with np.errstate(divide="ignore"):
-            big = np.where(log_piece, lam, 1.0)
+            big = np.where(log_piece, lam_a, 1.0)
             return np.where(log_piece, tau_dc + big * (self.S_ORBIT + self.S_TRANSIENT
                                                        * big ** (-5.0 / 3.0)), tau_w0)
 
-    def map_params(self, piece, lam, log_piece, tau_dc, tau_s, tau_w0):
-        """(start, end, c1, c2, c3) of the logarithmic-linear map ``lin_log`` of piece A or M."""
-        lam = np.asarray(lam, dtype=float)
-        inf = np.full(lam.shape, np.inf)
+    def map_params(self, piece: str, lam: RealArrayLike, log_piece: bool | npt.NDArray[np.bool_],
+                   tau_dc: float | FloatArray, tau_s: float | FloatArray,
+                   tau_w0: float | FloatArray) -> tuple[float | FloatArray, ...]:
+        """(start, end, c1, c2, c3) of the logarithmic-linear map ``lin_log`` of piece A or M.
+
+        Parameters
+        ----------
+        piece : str
+            "A" or "M" (any other name is taken as "M").
+        lam : array_like
+            lambda (Eq. 11).
+        log_piece : bool or ndarray of bool
+            Whether lambda lies on a ln-lambda piece.
+        tau_dc, tau_s, tau_w0 : float or ndarray
+            End of compression, ``split_time`` and the time where w vanishes.
+
+        Returns
+        -------
+        tuple of float or ndarray
+            The five arguments after tau of ``lin_log``.
+        """
+        lam_a = np.asarray(lam, dtype=float)
+        inf = np.full(lam_a.shape, np.inf)
         if piece == "A":
             with np.errstate(divide="ignore"):
                 c1 = self.C_STRETCH * np.where(
-                    log_piece, (self.LOG_FROM / np.where(log_piece, lam, 1.0)) ** (2.0 / 3.0), 1.0)
-            return tau_dc, tau_s, c1, np.where(log_piece, inf, self.C_END * (1.0 + lam)), inf
-        return tau_s, tau_w0, inf, lam, lam
+                    log_piece, (self.LOG_FROM / np.where(log_piece, lam_a, 1.0)) ** (2.0 / 3.0),
+                    1.0)
+            return tau_dc, tau_s, c1, np.where(log_piece, inf, self.C_END * (1.0 + lam_a)), inf
+        return tau_s, tau_w0, inf, lam_a, lam_a
 
 
-def lin_log(tau, start, end, c1, c2, c3):
-    """Reduced time y in [0, 1] on [start, end]: u = ln(1 + (tau - start)/c1) + (tau - start)/c3
-    - ln(1 + (end - tau)/c2), normalised (c = inf drops a term). The logarithms resolve a
-    fast start (the relaxation after tau_dc, scale c1) and a change of regime at the end (where
-    w -> 0, scale c2); the linear term the orbit's steady decay (time scale c3 = lambda)."""
+def lin_log(tau: float | FloatArray, start: float | FloatArray, end: float | FloatArray,
+            c1: float | FloatArray, c2: float | FloatArray,
+            c3: float | FloatArray) -> FloatArray:
+    """Reduced time y in [0, 1] of time piece A or M on [start, end].
+
+    u = ln(1 + (tau - start)/c1) + (tau - start)/c3 - ln(1 + (end - tau)/c2), normalised
+    (c = inf drops a term). The logarithms resolve a fast start (the relaxation after tau_dc,
+    scale c1) and a change of regime at the end (where w -> 0, scale c2); the linear term the
+    orbit's steady decay (time scale c3 = lambda).
+
+    Parameters
+    ----------
+    tau : float or ndarray
+        Times in [start, end].
+    start, end, c1, c2, c3 : float or ndarray
+        The map's constants (``Layout.map_params``).
+
+    Returns
+    -------
+    ndarray
+        y, the broadcast shape.
+    """
     span = end - start
     u0, u1 = -np.log1p(span / c2), np.log1p(span / c1) + span / c3
     u = np.log1p((tau - start) / c1) + (tau - start) / c3 - np.log1p((end - tau) / c2)
-    return (u - u0) / (u1 - u0)
+    y: FloatArray = (u - u0) / (u1 - u0)
+    return y
 
 
-def parse_array(text: str) -> np.ndarray:
-    """The 2-D array written as the string "rows cols v v ..." (the history coefficients)."""
+def parse_array(text: str) -> FloatArray:
+    """The 2-D array written as the string "rows cols v v ..." (the history coefficients).
+
+    Parameters
+    ----------
+    text : str
+        "rows cols" then rows * cols numbers, separated by spaces.
+
+    Returns
+    -------
+    ndarray
+        [rows, cols].
+    """
     v = np.array(text.split(), dtype=float)
     return v[2:].reshape(int(v[0]), int(v[1]))

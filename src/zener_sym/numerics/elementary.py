@@ -12,20 +12,33 @@ import math
 
 import numpy as np
 
+from ..typing import FloatArray, RealArrayLike
+
 __all__ = ["p3", "half_wave_sin"]
 
 # Taylor coefficients of P3: sum_j (-1)^j 2 (j + 1) x^{2j} / (2j + 3)!
 _P3_COEF = [(-1) ** j * 2.0 * (j + 1) / math.factorial(2 * j + 3) for j in range(12)]
 
 
-def p3(x):
-    """(sin x - x cos x)/x^3 for a float array, accurate to rounding (P3(0) = 1/3)."""
-    x = np.asarray(x, dtype=float)
-    shape = x.shape
-    x = x.reshape(-1)
+def p3(x: RealArrayLike) -> FloatArray:
+    """P3(x) = (sin x - x cos x)/x^3, accurate to rounding (P3(0) = 1/3).
+
+    Parameters
+    ----------
+    x : array_like
+        Real arguments (omega0 tau in delta1).
+
+    Returns
+    -------
+    ndarray
+        P3 at x, x's shape.
+    """
+    xa = np.asarray(x, dtype=float)
+    shape = xa.shape
+    x = xa.reshape(-1)
     small = np.abs(x) < 0.5
     xs = np.where(small, 1.0, x)
-    out = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
+    out: FloatArray = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
     if small.any():  # the series only where it is needed: most points of a history are not small
         x2 = x[small] ** 2
         series = np.zeros_like(x2)
@@ -44,21 +57,36 @@ _PI_HI = math.pi
 _PI_LO = 1.2246467991473532e-16  # pi - math.pi; tests derive it with mpmath
 
 
-def half_wave_sin(theta):
-    """sin(theta) for 0 <= theta <= pi and 0 beyond: the first half wave, where the zeroth-order
-    HAM compression delta0 (35) is positive (its contact ends at omega0 tau = pi, Eq. 54).
+def half_wave_sin(theta: RealArrayLike) -> FloatArray:
+    """sin(theta) for 0 <= theta <= pi and 0 beyond: the sine's first half wave.
 
-    Vectorized: y = min(theta, pi - theta) in [0, pi/2] (pi in two parts), clipped at 0 past pi,
-    then y (1 + s P(s)) with s = y^2 by Horner's rule on the Taylor coefficients. Within 3 ulp
-    of the correctly rounded sine on [0, pi] (tests/test_ham_chebyshev.py, against mpmath). theta must be >= 0 (a phase
-    omega0 tau); negative theta is a ValueError.
+    That is where the zeroth-order HAM compression delta0 (35) is positive (its contact ends at
+    omega0 tau = pi, Eq. 54). Vectorized: y = min(theta, pi - theta) in [0, pi/2] (pi in two
+    parts), clipped at 0 past pi, then y (1 + s P(s)) with s = y^2 by Horner's rule on the
+    Taylor coefficients. Within 3 ulp of the correctly rounded sine on [0, pi]
+    (tests/test_ham_chebyshev.py, against mpmath).
+
+    Parameters
+    ----------
+    theta : array_like
+        Phases omega0 tau, >= 0.
+
+    Returns
+    -------
+    ndarray
+        The half wave at theta, theta's shape.
+
+    Raises
+    ------
+    ValueError
+        If a theta is negative or NaN.
     """
-    theta = np.asarray(theta, dtype=float)
-    if theta.size and not theta.min() >= 0:  # a NaN fails too
+    th = np.asarray(theta, dtype=float)
+    if th.size and not th.min() >= 0:  # a NaN fails too
         raise ValueError("half_wave_sin: theta must be >= 0 (and not NaN)")
-    y = _PI_HI - theta
+    y: FloatArray = _PI_HI - th
     y += _PI_LO
-    np.minimum(y, theta, out=y)
+    np.minimum(y, th, out=y)
     np.maximum(y, 0.0, out=y)  # past pi: 0
     s = y * y
     p = np.full_like(s, _SIN_COEF[-1])

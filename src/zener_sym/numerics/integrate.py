@@ -13,8 +13,12 @@
 """
 from __future__ import annotations
 
-import numpy as np
+from collections.abc import Callable
 
+import numpy as np
+import numpy.typing as npt
+
+from ..typing import FloatArray, RealArrayLike
 from .chebyshev import cheb_nodes, clenshaw_take
 from .maps import smoothstep, smoothstep_inverse, smoothstep_slope
 
@@ -28,14 +32,29 @@ _MAP = smoothstep(_V)
 _DMAP = smoothstep_slope(_V)
 
 
-def contact_integral(fun, A, B, lam):
-    """integral_A^B fun(tau, lam) dtau for arrays A <= B, lam (same shape), smoothstep + GL."""
-    A, B, lam = np.broadcast_arrays(np.asarray(A, float), np.asarray(B, float),
-                                    np.asarray(lam, float))
-    L = np.maximum(B - A, 0.0)
-    t = A[..., None] + L[..., None] * _MAP
-    vals = fun(t, lam[..., None])
-    return L * np.sum(vals * (_DMAP * _WV), axis=-1)
+def contact_integral(fun: Callable[[FloatArray, FloatArray], FloatArray], A: RealArrayLike,
+                     B: RealArrayLike, lam: RealArrayLike) -> FloatArray:
+    """integral_A^B fun(tau, lam) dtau per point, smoothstep map and Gauss-Legendre (N_GL nodes).
+
+    Parameters
+    ----------
+    fun : callable
+        fun(tau, lam) on arrays, the nodes on a trailing axis.
+    A, B, lam : array_like
+        The limits (A <= B; B < A gives 0) and lambda, broadcast together.
+
+    Returns
+    -------
+    ndarray
+        The integrals, the broadcast shape.
+    """
+    A_, B_, lam_ = np.broadcast_arrays(np.asarray(A, float), np.asarray(B, float),
+                                       np.asarray(lam, float))
+    L = np.maximum(B_ - A_, 0.0)
+    t = A_[..., None] + L[..., None] * _MAP
+    vals = fun(t, lam_[..., None])
+    out: FloatArray = L * np.sum(vals * (_DMAP * _WV), axis=-1)
+    return out
 
 
 N_CHEB = 64
@@ -46,41 +65,72 @@ _CDMAP = smoothstep_slope(_CV)
 _CFIT = np.linalg.inv(np.polynomial.chebyshev.chebvander(_CX, N_CHEB - 1))
 
 
-def cumulative_integral(fun, A, B, lam, X):
+def cumulative_integral(fun: Callable[[FloatArray, FloatArray], FloatArray], A: RealArrayLike,
+                        B: RealArrayLike, lam: RealArrayLike, X: RealArrayLike) -> FloatArray:
     """integral_A^X fun(tau, lam) dtau for A <= X <= B, where A and B depend on lam only.
 
     The integrand in the smoothstep variable v (see ``contact_integral``) is interpolated at
     N_CHEB Chebyshev points for each distinct lam and integrated as a Chebyshev series, which is
     then evaluated at every X of that lam: no Python loop over points or over lam.
+
+    Parameters
+    ----------
+    fun : callable
+        fun(tau, lam) on arrays: tau of shape (R, N_CHEB), lam of shape (R, 1).
+    A, B, lam, X : array_like
+        The piece's ends, lambda and the upper limits, broadcast together.
+
+    Returns
+    -------
+    ndarray
+        The integrals, the broadcast shape.
     """
-    A, B, lam, X = np.broadcast_arrays(*(np.asarray(a, float) for a in (A, B, lam, X)))
-    lam_u, first, inv = np.unique(lam.ravel(), return_index=True, return_inverse=True)
-    return cumulative_rows(lambda t, r: fun(t, lam_u[r]), A.ravel()[first], B.ravel()[first],
-                           inv.reshape(X.shape), X)
+    A_, B_, lam_, X_ = np.broadcast_arrays(*(np.asarray(a, float) for a in (A, B, lam, X)))
+    lam_u, first, inv = np.unique(lam_.ravel(), return_index=True, return_inverse=True)
+    return cumulative_rows(lambda t, r: fun(t, lam_u[r]), A_.ravel()[first], B_.ravel()[first],
+                           inv.reshape(X_.shape), X_)
 
 
-def cumulative_rows(fun, A, B, rows, X):
+def cumulative_rows(fun: Callable[[FloatArray, npt.NDArray[np.intp]], FloatArray],
+                    A: RealArrayLike, B: RealArrayLike, rows: npt.ArrayLike,
+                    X: RealArrayLike) -> FloatArray:
     """integral_{A[r]}^X fun(tau, r) dtau at each X, with r = ``rows`` there (A[r] <= X <= B[r]).
 
-    ``fun(t, r)`` gets t of shape (R, N_CHEB) and r of shape (R, 1) (row indices into A and B).
     One Chebyshev antiderivative per row, as in ``cumulative_integral``.
+
+    Parameters
+    ----------
+    fun : callable
+        fun(t, r) gets t of shape (R, N_CHEB) and r of shape (R, 1) (row indices into A and B).
+    A, B : array_like
+        1-D: each row's piece.
+    rows : array_like of int
+        Each point's row.
+    X : array_like
+        The upper limits, rows' shape.
+
+    Returns
+    -------
+    ndarray
+        The integrals, rows' shape.
     """
-    A, B = np.asarray(A, float), np.asarray(B, float)
-    rows = np.asarray(rows, dtype=np.intp)
-    X = np.asarray(X, float)
-    R = np.arange(A.size)
-    L_u = np.maximum(B - A, 0.0)
-    t = A[:, None] + L_u[:, None] * _CMAP
+    A_, B_ = np.asarray(A, float), np.asarray(B, float)
+    rows_ = np.asarray(rows, dtype=np.intp)
+    X_ = np.asarray(X, float)
+    R = np.arange(A_.size)
+    L_u = np.maximum(B_ - A_, 0.0)
+    t = A_[:, None] + L_u[:, None] * _CMAP
     g = fun(t, R[:, None]) * (L_u[:, None] * _CDMAP)
     # Chebyshev coefficients in x = 2 v - 1, one row per lambda; einsum rather than a BLAS matmul,
     # whose blocking would make a lambda's digits depend on which other lambdas share the call
     coef = np.einsum("uj,kj->uk", g, _CFIT)
     icoef = np.polynomial.chebyshev.chebint(coef, lbnd=-1.0, scl=0.5, axis=1)
-    L = L_u.take(rows)
+    L = L_u.take(rows_)
     with np.errstate(invalid="ignore", divide="ignore"):
-        frac = np.where(L > 0.0, (X - A.take(rows)) / L, 0.0)
+        frac = np.where(L > 0.0, (X_ - A_.take(rows_)) / L, 0.0)
     x = 2.0 * smoothstep_inverse(frac) - 1.0
     icT = np.ascontiguousarray(icoef.T)
     at_a = clenshaw_take(icT, R, np.full(R.size, -1.0))  # same arithmetic: exactly 0 at X = A
-    out = clenshaw_take(icT, rows, x) - at_a.take(rows)
-    return np.where(L > 0.0, out, 0.0)
+    out = clenshaw_take(icT, rows_, x) - at_a.take(rows_)
+    res: FloatArray = np.where(L > 0.0, out, 0.0)
+    return res

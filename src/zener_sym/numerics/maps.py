@@ -7,21 +7,64 @@ serve numpy arrays, floats and mpmath numbers.
 """
 from __future__ import annotations
 
+from typing import TypeVar
+
 import numpy as np
+
+from ..typing import FloatArray, RealArrayLike
 
 __all__ = ["smoothstep", "smoothstep_slope", "smoothstep_inverse"]
 
 
-def smoothstep(v):
-    """v^2 (3 - 2 v)."""
+#: A float or a float array (an mpmath number passes as well: mpmath is untyped).
+_V = TypeVar("_V", float, FloatArray)
+
+
+def smoothstep(v: _V) -> _V:
+    """The smoothstep map v^2 (3 - 2 v).
+
+    Parameters
+    ----------
+    v : float, ndarray or mpmath.mpf
+        Points in [0, 1].
+
+    Returns
+    -------
+    float, ndarray or mpmath.mpf
+        The map at v, of v's type.
+    """
     return v * v * (3.0 - 2.0 * v)
 
 
-def smoothstep_slope(v):
-    """d/dv smoothstep(v) = 6 v (1 - v)."""
+def smoothstep_slope(v: _V) -> _V:
+    """The smoothstep map's slope, d/dv [v^2 (3 - 2 v)] = 6 v (1 - v).
+
+    Parameters
+    ----------
+    v : float, ndarray or mpmath.mpf
+        Points in [0, 1].
+
+    Returns
+    -------
+    float, ndarray or mpmath.mpf
+        The slope at v, of v's type.
+    """
     return 6.0 * v * (1.0 - v)
 
 
-def smoothstep_inverse(x):
-    """v in [0, 1] with v^2 (3 - 2 v) = x, for x in [0, 1] (clipped), float arrays."""
-    return 0.5 - np.sin(np.arcsin(np.clip(1.0 - 2.0 * x, -1.0, 1.0)) / 3.0)
+def smoothstep_inverse(x: RealArrayLike) -> FloatArray:
+    """v in [0, 1] with v^2 (3 - 2 v) = x.
+
+    Parameters
+    ----------
+    x : array_like
+        Values in [0, 1] (clipped to it).
+
+    Returns
+    -------
+    ndarray
+        v, x's shape.
+    """
+    c = np.clip(1.0 - 2.0 * np.asarray(x, dtype=float), -1.0, 1.0)
+    v: FloatArray = 0.5 - np.sin(np.arcsin(c) / 3.0)
+    return v

@@ -2,6 +2,9 @@
 integral (``integrate.contact_integral``), for the mpmath HAM kernels."""
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import mpmath
 
 from .maps import smoothstep, smoothstep_slope
@@ -9,8 +12,19 @@ from .maps import smoothstep, smoothstep_slope
 __all__ = ["p3_mp", "contact_integral_mp"]
 
 
-def p3_mp(x):
-    """P3 at the current mpmath precision (series for |x| < 1/2)."""
+def p3_mp(x: Any) -> Any:
+    """P3(x) = (sin x - x cos x)/x^3 at the current mpmath precision (series for |x| < 1/2).
+
+    Parameters
+    ----------
+    x : mpmath.mpf, float or str
+        The argument (anything ``mpmath.mpf`` takes).
+
+    Returns
+    -------
+    mpmath.mpf
+        P3(x).
+    """
     x = mpmath.mpf(x)
     if abs(x) >= 0.5:
         return (mpmath.sin(x) - x * mpmath.cos(x)) / x**3
@@ -24,8 +38,24 @@ def p3_mp(x):
         j += 1
 
 
-def contact_integral_mp(fun, A, B):
-    """Same as ``contact_integral`` for mpmath scalars (mpmath.quad on the mapped variable)."""
+def contact_integral_mp(fun: Callable[[Any], Any], A: Any, B: Any) -> Any:
+    """integral_A^B fun(tau) dtau at the current mpmath precision, through the smoothstep map.
+
+    The mpmath twin of ``integrate.contact_integral`` (mpmath.quad, Gauss-Legendre, on the
+    mapped variable v, tau = A + (B - A) v^2 (3 - 2 v)).
+
+    Parameters
+    ----------
+    fun : callable
+        The integrand, taking and returning mpmath numbers.
+    A, B : mpmath.mpf, float or str
+        The limits; B <= A gives 0.
+
+    Returns
+    -------
+    mpmath.mpf
+        The integral.
+    """
     A, B = mpmath.mpf(A), mpmath.mpf(B)
     if B <= A:
         return mpmath.mpf(0)

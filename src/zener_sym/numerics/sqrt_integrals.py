@@ -33,10 +33,13 @@ trailing axis, so there is no Python loop over evaluation points.
 from __future__ import annotations
 
 import functools
+from collections.abc import Callable, Sequence
 
 import numpy as np
+import numpy.typing as npt
 from scipy.special import roots_jacobi
 
+from ..typing import FloatArray, RealArrayLike
 from .blocks import BLOCK
 from .chebyshev import cheb_fit_matrix, cheb_nodes, cheb_to_monomial, horner_take
 
@@ -53,7 +56,7 @@ _U = (1.0 + _x) / 2.0
 _W = _w / 2.0**1.5
 
 #: name -> g(sin t, cos t)
-K_FUNCS = {
+K_FUNCS: dict[str, Callable[[FloatArray, FloatArray], FloatArray]] = {
     "cc": lambda s, c: c * c,
     "sc": lambda s, c: s * c,
     "ss": lambda s, c: s * s,
@@ -62,12 +65,12 @@ K_FUNCS = {
 }
 
 
-def _sin_over(s, x):
+def _sin_over(s: FloatArray, x: FloatArray) -> FloatArray:
     """sin(x)/x from sin(x), with the limit 1 at x = 0 (T = 0 puts every node at 0)."""
     return np.divide(s, x, out=np.ones_like(x), where=x > 0)
 
 
-def _left(a, T, names):
+def _left(a: FloatArray, T: FloatArray, names: Sequence[str]) -> dict[str, FloatArray]:
     """integral_0^T exp(-a t) g(t) sqrt(sin t) dt for 0 <= T <= pi/2 (arrays broadcast)."""
     x = T[..., None] * _U  # trailing axis: nodes
     s, c = np.sin(x), np.cos(x)
@@ -76,7 +79,7 @@ def _left(a, T, names):
     return {n: scale * np.sum(base * K_FUNCS[n](s, c), axis=-1) for n in names}
 
 
-def _right(a, r, names):
+def _right(a: FloatArray, r: FloatArray, names: Sequence[str]) -> dict[str, FloatArray]:
     """integral_{pi - r}^{pi} exp(-a t) g(t) sqrt(sin t) dt for 0 <= r <= pi/2."""
     x = r[..., None] * _U  # distance from pi
     s, c = np.sin(x), -np.cos(x)  # sin and cos of t = pi - x
@@ -86,8 +89,11 @@ def _right(a, r, names):
     return {n: scale * np.sum(base * K_FUNCS[n](s, c), axis=-1) for n in names}
 
 
-def sqrt_integrals(a, theta, names=("cc", "sc", "ss")) -> dict:
+def sqrt_integrals(a: RealArrayLike, theta: RealArrayLike,
+                   names: Sequence[str] = ("cc", "sc", "ss")) -> dict[str, FloatArray]:
     """K_g(a, theta) = integral_0^min(theta, pi) exp(-a t) g(t) sqrt(sin t) dt, for g in ``names``.
+
+    The square-root integrals of the first-order HAM correction (Eqs. 36-42).
 
     Parameters
     ----------
@@ -102,26 +108,32 @@ def sqrt_integrals(a, theta, names=("cc", "sc", "ss")) -> dict:
     -------
     dict
         name -> float64 array of the broadcast shape of ``a`` and ``theta``.
+
+    Raises
+    ------
+    ValueError
+        If an ``a`` or a ``theta`` is negative or not finite.
     """
-    a, theta = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(theta, dtype=float))
-    if not (np.all(np.isfinite(a)) and np.all(a >= 0)):
+    a_b, theta_b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(theta, dtype=float))
+    if not (np.all(np.isfinite(a_b)) and np.all(a_b >= 0)):
         raise ValueError("sqrt_integrals: the decay rate a must be finite and >= 0")
-    if not (np.all(np.isfinite(theta)) and np.all(theta >= 0)):
+    if not (np.all(np.isfinite(theta_b)) and np.all(theta_b >= 0)):
         raise ValueError("sqrt_integrals: theta must be finite and >= 0")
-    shape = a.shape
-    a = a.reshape(-1)
-    th = np.minimum(theta, np.pi).reshape(-1)
-    if a.size > _CHUNK:
+    shape = a_b.shape
+    a1 = a_b.reshape(-1)
+    th = np.minimum(theta_b, np.pi).reshape(-1)
+    if a1.size > _CHUNK:
         # blocks of points keep the (points x nodes) temporaries in cache-sized memory
-        parts = [_flat(a[i:i + _CHUNK], th[i:i + _CHUNK], names) for i in range(0, a.size, _CHUNK)]
+        parts = [_flat(a1[i:i + _CHUNK], th[i:i + _CHUNK], names)
+                 for i in range(0, a1.size, _CHUNK)]
         return {n: np.concatenate([p[n] for p in parts]).reshape(shape) for n in names}
-    return {n: v.reshape(shape) for n, v in _flat(a, th, names).items()}
+    return {n: v.reshape(shape) for n, v in _flat(a1, th, names).items()}
 
 
 _CHUNK = 2048
 
 
-def _flat(a, th, names):
+def _flat(a: FloatArray, th: FloatArray, names: Sequence[str]) -> dict[str, FloatArray]:
     """sqrt_integrals on validated 1-D arrays, th already clipped to [0, pi]."""
     half = np.pi / 2.0
     with np.errstate(divide="ignore", over="ignore"):  # subnormal a: CUT / a = inf, no cap
@@ -168,17 +180,18 @@ _WIDTH = np.pi / 2.0 / N_PIECES
 _BLOCK = BLOCK
 
 
-_KS_TABLE = None
+_KS_TABLE: tuple[FloatArray, FloatArray] | None = None
 
 
-def _ks_table():
+def _ks_table() -> tuple[FloatArray, FloatArray]:
     """Coefficients [piece, theta degree, a degree] of G and H (computed on first use, about
     4000 quadrature points)."""
     global _KS_TABLE
     if _KS_TABLE is None:
         a = A_SERIES / 2.0 * (cheb_nodes(N_RATE) + 1.0)
         dt, da = cheb_fit_matrix(N_SERIES), cheb_fit_matrix(N_RATE)
-        cG, cH = [], []
+        cG: list[FloatArray] = []
+        cH: list[FloatArray] = []
         for p in range(N_PIECES):
             y = _WIDTH * (p + 0.5 * (cheb_nodes(N_SERIES) + 1.0))  # theta or r in the piece
             A, Y = np.meshgrid(a, y)  # [theta node, a node]
@@ -190,38 +203,55 @@ def _ks_table():
     return _KS_TABLE
 
 
-def impulse_s(a, theta):
+def impulse_s(a: RealArrayLike, theta: RealArrayLike) -> FloatArray:
     """K_s(a, theta) = int_0^min(theta, pi) exp(-a t) sin^{3/2} t dt, fast for many theta per a.
 
     Same value as ``sqrt_integrals(a, theta, ("s",))["s"]`` to about 1e-14 (tests), from the
     Chebyshev series for a <= A_SERIES and the quadrature for larger a.
+
+    Parameters
+    ----------
+    a : array_like
+        Decay rates, finite and >= 0 (a broadcast column, one rate per line, is fastest).
+    theta : array_like
+        Phases, finite and >= 0; past pi the value at pi.
+
+    Returns
+    -------
+    ndarray
+        K_s, the broadcast shape of ``a`` and ``theta``.
+
+    Raises
+    ------
+    ValueError
+        If an ``a`` or a ``theta`` is negative or not finite.
     """
-    a, theta = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(theta, dtype=float))
+    a_b, th_b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(theta, dtype=float))
     # a broadcast column (one rate per line of theta, stride 0 along it): its lines are checked
     # and sorted, not every point
-    column = a.ndim >= 1 and a.shape[-1] > 1 and a.strides[-1] == 0
-    rates = a[..., :1] if column else a
+    column = a_b.ndim >= 1 and a_b.shape[-1] > 1 and a_b.strides[-1] == 0
+    rates = a_b[..., :1] if column else a_b
     if not (np.all(np.isfinite(rates)) and np.all(rates >= 0)):
         raise ValueError("impulse_s: the decay rate a must be finite and >= 0")
-    lo, hi = (theta.min(), theta.max()) if theta.size else (0.0, 0.0)
+    lo, hi = (th_b.min(), th_b.max()) if th_b.size else (0.0, 0.0)
     if not (lo >= 0 and hi < np.inf):  # a NaN fails both
         raise ValueError("impulse_s: theta must be finite and >= 0")
     if column and np.all(rates <= A_SERIES):
         u, line = np.unique(rates[..., 0], return_inverse=True)
-        return _series_eval(u, theta.reshape(-1), line=line.ravel(),
-                            n_col=a.shape[-1]).reshape(a.shape)
-    out = np.empty(a.shape)
-    fast = a <= A_SERIES
+        return _series_eval(u, th_b.reshape(-1), line=line.ravel(),
+                            n_col=a_b.shape[-1]).reshape(a_b.shape)
+    out = np.empty(a_b.shape)
+    fast = a_b <= A_SERIES
     if (~fast).any():
-        out[~fast] = sqrt_integrals(a[~fast], theta[~fast], ("s",))["s"]
+        out[~fast] = sqrt_integrals(a_b[~fast], th_b[~fast], ("s",))["s"]
     if fast.any():
-        u, inv = np.unique(a[fast], return_inverse=True)
-        out[fast] = _series_eval(u, theta[fast], inv=inv)
+        u, inv = np.unique(a_b[fast], return_inverse=True)
+        out[fast] = _series_eval(u, th_b[fast], inv=inv)
     return out
 
 
 @functools.cache
-def _ks_pieces():
+def _ks_pieces() -> FloatArray:
     """[theta degree, q, a degree]: K_s's Chebyshev series in each theta piece's local variable
     x = 2 (theta - q w) / w - 1 (w = _WIDTH, q = 0 ... 2 N_PIECES - 1 along [0, pi]). Pieces
     q < N_PIECES hold G (K_s = theta^{5/2} G); the right half's H, a series in r = pi - theta
@@ -230,15 +260,32 @@ def _ks_pieces():
     the stored series: one row per (piece, rate) serves both halves."""
     cG, cH = _ks_table()
     flip = -((-1.0) ** np.arange(cG.shape[1]))[:, None, None]
-    return np.concatenate([cG.transpose(1, 0, 2), flip * cH[::-1].transpose(1, 0, 2)], axis=1)
+    pieces: FloatArray = np.concatenate([cG.transpose(1, 0, 2), flip * cH[::-1].transpose(1, 0, 2)], axis=1)
+    return pieces
 
 
 class KsSeries:
-    """K_s(u[i], theta) from the series for a fixed set of rates u (all in [0, A_SERIES]): the
-    a direction is contracted once here, so callers that evaluate a history block by block (a
-    model keeping its temporaries cache-sized) pay it once. ``at`` evaluates one block."""
+    """K_s(u[i], theta) from the series for a fixed set of rates u (all in [0, A_SERIES]).
 
-    def __init__(self, u):
+    The a direction is contracted once here, so callers that evaluate a history block by block
+    (a model keeping its temporaries cache-sized) pay it once. ``at`` evaluates one block.
+
+    Parameters
+    ----------
+    u : array_like
+        The decay rates, finite and in [0, A_SERIES].
+
+    Raises
+    ------
+    ValueError
+        If a rate is outside [0, A_SERIES] or not finite.
+    """
+
+    n: int
+    rows: FloatArray
+    base: FloatArray
+
+    def __init__(self, u: RealArrayLike) -> None:
         u = np.asarray(u, dtype=float).ravel()
         if not (np.all(np.isfinite(u)) and np.all(u >= 0) and np.all(u <= A_SERIES)):
             raise ValueError(f"KsSeries: the decay rates must be finite and in [0, {A_SERIES:g}]")
@@ -260,9 +307,22 @@ class KsSeries:
         self.rows = cheb_to_monomial(deg) @ c[:deg].reshape(deg, -1)  # [power, piece * rate]
         self.base = np.concatenate([np.zeros(N_PIECES * n), np.tile(k_pi, N_PIECES)])  # per row
 
-    def at(self, th, iv):
-        """K_s at the phases th (1-D, >= 0; past pi: K_s(a, pi)) for the rates u[iv]; iv must be
-        in range (it indexes without a bounds check)."""
+    def at(self, th: FloatArray, iv: npt.NDArray[np.intp]) -> FloatArray:
+        """K_s at the phases th for the rates u[iv].
+
+        Parameters
+        ----------
+        th : ndarray
+            1-D phases, >= 0; past pi the value at pi.
+        iv : ndarray of intp
+            Each phase's rate, an index into u; it must be in range (it indexes without a
+            bounds check).
+
+        Returns
+        -------
+        ndarray
+            K_s at the phases, th's shape.
+        """
         t = np.minimum(th, np.pi)
         u_ = t * (1.0 / _WIDTH)
         row = u_.astype(np.intp)
@@ -274,7 +334,7 @@ class KsSeries:
         row += iv
         y = np.pi - t
         np.minimum(y, t, out=y)  # theta on the left half, r = pi - theta on the right
-        val = np.sqrt(y)
+        val: FloatArray = np.sqrt(y)
         val *= y
         val *= y
         val *= horner_take(self.rows, row, x)
@@ -287,7 +347,9 @@ class KsSeries:
 _MAX_RATES = 2048
 
 
-def _series_eval(u, th, inv=None, line=None, n_col=None):
+def _series_eval(u: FloatArray, th: FloatArray, inv: npt.NDArray[np.intp] | None = None,
+                 line: npt.NDArray[np.intp] | None = None,
+                 n_col: int | None = None) -> FloatArray:
     """K_s at phases th for the rates u (all <= A_SERIES), from the series: point i has the rate
     u[inv[i]], or, with ``line``, u[line[i // n_col]] (a rate per line of n_col points, so no
     per-point index array is built). th >= 0; phases past pi give K_s(a, pi)."""
@@ -295,6 +357,7 @@ def _series_eval(u, th, inv=None, line=None, n_col=None):
     if u.size > _MAX_RATES:
         # points sorted by rate; each group of rates contracted alone (bounded memory)
         if inv is None:
+            assert line is not None and n_col is not None  # the callers give one or the other
             inv = np.repeat(line, n_col)
         order = np.argsort(inv, kind="stable")
         bounds = np.searchsorted(inv[order], np.arange(0, u.size + _MAX_RATES, _MAX_RATES))
@@ -308,6 +371,11 @@ def _series_eval(u, th, inv=None, line=None, n_col=None):
     # allocator's mmap threshold): whole-array temporaries cost more than their arithmetic
     for s in range(0, th.size, _BLOCK):
         e = min(s + _BLOCK, th.size)
-        iv = inv[s:e] if line is None else line.take(np.arange(s, e) // n_col, mode="clip")
+        if line is None:
+            assert inv is not None
+            iv = inv[s:e]
+        else:
+            assert n_col is not None
+            iv = line.take(np.arange(s, e) // n_col, mode="clip")
         out[s:e] = series.at(th[s:e], iv)
     return out

@@ -148,10 +148,12 @@ def _table_module(text: str) -> dict[str, Any]:
     return ns
 
 
-def _table(builder_name: str, fields: tuple[tuple[str, str], ...], what: str) -> tuple[FreshFn, SameFn]:
+def _table(builder_name: str, fields: tuple[tuple[str, str], ...],
+           what: str) -> tuple[FreshFn, SameFn]:
     """fresh/same of a Chebyshev table in generated/ (compared numerically within the builder's
     ``CHECK_RTOL``, plus its inputs hash: the node values come from floating-point solvers)."""
-    built: dict[str, Any] = {}  # fresh text -> the tables it was rendered from (what builder.compare reads)
+    # fresh text -> the tables it was rendered from (what builder.compare reads)
+    built: dict[str, Any] = {}
 
     def builder() -> ModuleType:
         import importlib

@@ -319,7 +319,7 @@ class Table1(TypedDict):
 
 #: Table 1 of the appendix (FEM materials) and the appendix's ranges, as printed, in SI units.
 TABLE1: Table1 = {"R": 0.9e-3, "E1": 12.23e9, "nu1": 0.21, "rho1": 879.0, "E2": 73e9, "nu2": 0.21,
-          "rho2": 2500.0, "V0_range": (1.0, 20.0), "H_range": (0.18e-3, 0.75e-3)}
+                  "rho2": 2500.0, "V0_range": (1.0, 20.0), "H_range": (0.18e-3, 0.75e-3)}
 
 
 def by_id(item_id: str) -> Printed:

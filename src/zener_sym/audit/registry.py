@@ -18,8 +18,8 @@ from .printed import Expr
 from .texts import tex
 from .verdicts import Verdict, compare
 
-__all__ = ["CHECKS", "Check", "check", "printed_form", "printed_decimal", "printed_float", "hertz_constant",
-           "hunter_factor",
+__all__ = ["CHECKS", "Check", "check", "printed_form", "printed_decimal", "printed_float",
+           "hertz_constant", "hunter_factor",
            "sentences", "source", "compare_form", "named_form", "hyper"]
 
 #: A check: called with the item id, returns the item's verdict.

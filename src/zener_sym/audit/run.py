@@ -86,7 +86,8 @@ def run_audit(ids: Collection[str] | None = None) -> list[Result]:
 
 
 def summary_line(results: Sequence[Result]) -> str:
-    """'N items audited: n1 consistent, n2 typo, ...' (verdicts that occur, in :data:`VERDICTS` order)."""
+    """'N items audited: n1 consistent, n2 typo, ...' (the verdicts that occur, in the order of
+    :data:`.verdicts.VERDICTS`)."""
     counts = {v: sum(r.verdict == v for r in results) for v in VERDICTS}
     body = ", ".join(f"{n} {v}" for v, n in counts.items() if n)
     return f"{len(results)} items audited: {body}."

@@ -66,15 +66,17 @@ class Verdict(NamedTuple):
 
 # Sampling ranges: physical ranges of each symbol, so that square roots stay real
 # (0 < omega0 tau < pi, lam below the critical 2.44, Poisson ratios in (0, 1/2)).
-_RANGES: dict[str, tuple[float, float]] = {"lam": (0.05, 2.3), "tau": (0.05, 1.2), "k": (0.6, 1.1), "beta": (0.05, 0.9),
-           "omega0": (0.3, 1.1), "p": (0.1, 0.9), "x": (0.05, 0.9), "y": (0.1, 1.0),
-           "dm": (0.5, 1.5), "nu1": (0.1, 0.45), "nu2": (0.1, 0.45), "t": (0.05, 1.0)}
+_RANGES: dict[str, tuple[float, float]] = {
+    "lam": (0.05, 2.3), "tau": (0.05, 1.2), "k": (0.6, 1.1), "beta": (0.05, 0.9),
+    "omega0": (0.3, 1.1), "p": (0.1, 0.9), "x": (0.05, 0.9), "y": (0.1, 1.0),
+    "dm": (0.5, 1.5), "nu1": (0.1, 0.45), "nu2": (0.1, 0.45), "t": (0.05, 1.0)}
 _DEFAULT_RANGE = (0.5, 3.0)
 
 # Test functions for unknown functions of tau in relations: smooth, positive on the sample range.
-_TEST_FUNCS: dict[str, Callable[[Expr], Expr]] = {"d": lambda s: 0.3 + s / 2 + s**2 / 7, "d0": lambda s: 0.4 + s / 3 + s**2 / 5,
-               "d1": lambda s: 0.1 + s / 9 - s**2 / 11, "yf": lambda s: 1 - s**2 / 3,
-               "C11": lambda s: 0.2 + s / 5, "C12": lambda s: -0.3 + s**2 / 6}
+_TEST_FUNCS: dict[str, Callable[[Expr], Expr]] = {
+    "d": lambda s: 0.3 + s / 2 + s**2 / 7, "d0": lambda s: 0.4 + s / 3 + s**2 / 5,
+    "d1": lambda s: 0.1 + s / 9 - s**2 / 11, "yf": lambda s: 1 - s**2 / 3,
+    "C11": lambda s: 0.2 + s / 5, "C12": lambda s: -0.3 + s**2 / 6}
 
 
 def sample_point(symbols: Iterable[Expr], rng: random.Random) -> dict[Expr, Expr]:

@@ -26,7 +26,8 @@ _ERR_LABEL = {"rel": r"$|q-q_{\rm exact}|/q_{\rm exact}$",
               "max": r"$|q-q_{\rm exact}|/\max|q_{\rm exact}|$"}
 
 
-def _series(rows: Iterable[Row], panel: str) -> dict[str, tuple[FloatArray, FloatArray, FloatArray]]:
+def _series(rows: Iterable[Row],
+            panel: str) -> dict[str, tuple[FloatArray, FloatArray, FloatArray]]:
     """The curves of one panel: series -> (x, y, error), a missing error as NaN."""
     out: dict[str, tuple[list[float], list[float], list[float]]] = {}
     for p, s, x, y, e in rows:

@@ -148,7 +148,8 @@ def compare_csv(old: str, new: str, rtol: float = RTOL, atol: float = ATOL) -> l
     return diffs
 
 
-def stale(folder: str | os.PathLike[str], only: Iterable[int] | None = None) -> dict[str, list[str]]:
+def stale(folder: str | os.PathLike[str],
+          only: Iterable[int] | None = None) -> dict[str, list[str]]:
     """{figure name: differences} for the CSVs in ``folder`` that are stale or missing."""
     folder = Path(folder)
     bad: dict[str, list[str]] = {}

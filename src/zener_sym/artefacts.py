@@ -19,11 +19,22 @@ import difflib
 import json
 import math
 from dataclasses import dataclass
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
+from types import ModuleType
+from typing import Any
 
 __all__ = ["Artefact", "ARTEFACTS", "names", "get", "locate", "check", "build",
-           "text_diff"]
+           "text_diff", "Texts", "FreshFn", "SameFn", "WriteFn"]
+
+#: ``{path relative to the checkout root: text}`` of an artefact's files.
+Texts = dict[str, str]
+#: ``fresh(root)``: the fresh texts of an artefact (``root`` None: the installed package).
+FreshFn = Callable[[Path | None], Texts]
+#: ``same(rel, committed, fresh)``: the differences that make a committed file stale.
+SameFn = Callable[[str, str, str], list[str]]
+#: ``write(root, texts)``: writes an artefact from its fresh texts; the files written.
+WriteFn = Callable[[Path | None, Texts], list[Path]]
 
 #: A path of a committed file relative to the checkout's root.
 _PACKAGE = "src/zener_sym/"
@@ -76,16 +87,16 @@ class Artefact:
 
     name: str
     about: str
-    paths: tuple
-    fresh: Callable
-    same: Callable = text_diff
-    write: Callable | None = None
+    paths: tuple[str, ...]
+    fresh: FreshFn
+    same: SameFn = text_diff
+    write: WriteFn | None = None
     needs_checkout: bool = True
     alias: str = ""
 
 
-def _write_texts(root: Path | None, texts: dict) -> list[Path]:
-    written = []
+def _write_texts(root: Path | None, texts: Texts) -> list[Path]:
+    written: list[Path] = []
     for rel, text in texts.items():
         p = locate(root, rel)
         if p.exists() and p.read_text(encoding="utf-8") == text:
@@ -96,11 +107,11 @@ def _write_texts(root: Path | None, texts: dict) -> list[Path]:
     return written
 
 
-def check(art: Artefact, root: Path | None, texts: dict | None = None) -> list[str]:
+def check(art: Artefact, root: Path | None, texts: Texts | None = None) -> list[str]:
     """Why the committed files of ``art`` are stale (empty list: fresh). ``texts``: its fresh
     texts if already computed."""
     texts = art.fresh(root) if texts is None else texts
-    problems = []
+    problems: list[str] = []
     for rel, new in texts.items():
         p = locate(root, rel)
         if not p.exists():
@@ -118,36 +129,38 @@ def build(art: Artefact, root: Path | None) -> list[Path]:
 
 # --- the artefacts' fresh texts and comparisons -----------------------------------------------
 
-def _kernels(root):
+def _kernels(root: Path | None) -> Texts:
     from . import codegen
 
     return {f"generated/{name}": text for name, text in codegen.render_all().items()}
 
 
-def _formulas(root):
+def _formulas(root: Path | None) -> Texts:
     from .derivation import formulas, registry
 
     return {formulas.FILENAME: formulas.render(registry.derive(checks=False))}
 
 
-def _table_module(text: str) -> dict:
+def _table_module(text: str) -> dict[str, Any]:
     """The names a generated table file defines (it holds data only: literals)."""
-    ns: dict = {}
+    ns: dict[str, Any] = {}
     exec(compile(text, "<generated table>", "exec"), ns)  # noqa: S102 - our own generated data
     return ns
 
 
-def _table(builder_name: str, fields: tuple, what: str):
+def _table(builder_name: str, fields: tuple[tuple[str, str], ...],
+           what: str) -> tuple[FreshFn, SameFn]:
     """fresh/same of a Chebyshev table in generated/ (compared numerically within the builder's
     ``CHECK_RTOL``, plus its inputs hash: the node values come from floating-point solvers)."""
-    built: dict = {}  # fresh text -> the tables it was rendered from (what builder.compare reads)
+    # fresh text -> the tables it was rendered from (what builder.compare reads)
+    built: dict[str, Any] = {}
 
-    def builder():
+    def builder() -> ModuleType:
         import importlib
 
         return importlib.import_module(builder_name)
 
-    def fresh(root):
+    def fresh(root: Path | None) -> Texts:
         b = builder()
         tables = b.build_tables()
         text = b.render(tables)
@@ -155,7 +168,7 @@ def _table(builder_name: str, fields: tuple, what: str):
         built[text] = tables
         return {f"generated/{b.table_path().name}": text}
 
-    def same(rel, old, new):
+    def same(rel: str, old: str, new: str) -> list[str]:
         b = builder()
         try:
             o = _table_module(old)
@@ -163,7 +176,7 @@ def _table(builder_name: str, fields: tuple, what: str):
         except Exception as exc:  # a broken committed file is stale, not a crash
             return [f"{rel} does not load: {type(exc).__name__}: {exc}"]
         tables = built[new] if new in built else b.build_tables()
-        problems = b.compare(stored, tables)
+        problems: list[str] = b.compare(stored, tables)
         current = _table_module(new)["INPUTS_HASH"]
         if o.get("INPUTS_HASH") != current:
             problems.append(f"inputs hash {o.get('INPUTS_HASH')} != current {current} "
@@ -173,64 +186,64 @@ def _table(builder_name: str, fields: tuple, what: str):
     return fresh, same
 
 
-def _envelopes_fresh(root):
+def _envelopes_fresh(root: Path | None) -> Texts:
     from .bench.envelopes import build
 
     return {"src/zener_sym/data/envelopes.json": json.dumps(build(), indent=1, sort_keys=True)
             + "\n"}
 
 
-def _envelopes_same(rel, old, new):
+def _envelopes_same(rel: str, old: str, new: str) -> list[str]:
     from .scene.envelopes import compare
 
     return compare(json.loads(old), json.loads(new))
 
 
-def _ham_convergence_fresh(root):
+def _ham_convergence_fresh(root: Path | None) -> Texts:
     from .bench import ham_convergence
 
     return ham_convergence.fresh_texts(root)
 
 
-def _ham_convergence_write(root, texts):
+def _ham_convergence_write(root: Path | None, texts: Texts) -> list[Path]:
     from .bench import ham_convergence
 
     return ham_convergence.write(root=root, with_chart=True)
 
 
-def _audit_fresh(root):
+def _audit_fresh(root: Path | None) -> Texts:
     from .audit.markdown import cached_results, markdown
 
     return {"AUDIT.md": markdown(cached_results())}
 
 
-def _figures_fresh(root):
+def _figures_fresh(root: Path | None) -> Texts:
     from .figures import data as D
 
     return {f"docs/figures/{D.FIGURES[n].name}.csv": D.to_csv(D.FIGURES[n].compute(False))
             for n in D.NUMBERS}
 
 
-def _figures_same(rel, old, new):
+def _figures_same(rel: str, old: str, new: str) -> list[str]:
     from .figures.make import compare_csv
 
     return [f"{rel}: {d}" for d in compare_csv(old, new)]
 
 
-def _figures_write(root, texts):
+def _figures_write(root: Path | None, texts: Texts) -> list[Path]:
     from .figures import make
 
     make.build(locate(root, "docs/figures"), None, ("png",))
     return [locate(root, rel) for rel in texts]
 
 
-def _calibration_fresh(root):
+def _calibration_fresh(root: Path | None) -> Texts:
     from .report import calibration
 
     return {calibration.TEXT: calibration.text()}
 
 
-def _calibration_write(root, texts):
+def _calibration_write(root: Path | None, texts: Texts) -> list[Path]:
     from .report import calibration
 
     text_path, chart = locate(root, calibration.TEXT), locate(root, calibration.CHART)
@@ -241,14 +254,14 @@ def _calibration_write(root, texts):
     return [text_path, chart]
 
 
-def _peers_fresh(root):
+def _peers_fresh(root: Path | None) -> Texts:
     from .report import peers
 
     rel = "docs/viscoelastic.md"
     return {rel: peers.update_doc(locate(root, rel).read_text("utf-8"), peers.markdown())}
 
 
-def _ham_envelopes_fresh(root):
+def _ham_envelopes_fresh(root: Path | None) -> Texts:
     from .report import ham_envelopes
 
     rel = "docs/ham.md"
@@ -256,7 +269,7 @@ def _ham_envelopes_fresh(root):
                                           ham_envelopes.envelope_markdown())}
 
 
-def _kernel_check_fresh(root):
+def _kernel_check_fresh(root: Path | None) -> Texts:
     from .ham import kernel_check
 
     worst = kernel_check.measure()[0]  # the wall-time ratio it also gives is no artefact
@@ -265,11 +278,11 @@ def _kernel_check_fresh(root):
     return {"docs/data/kernel_check.csv": "\n".join(lines) + "\n"}
 
 
-def _kernel_check_same(rel, old, new):
+def _kernel_check_same(rel: str, old: str, new: str) -> list[str]:
     """Worst errors near rounding differ between machines (libm, SIMD): stale only when one
     moves by more than a factor 4, or the kernels listed differ."""
-    def rows(text):
-        out = {}
+    def rows(text: str) -> dict[str, tuple[float, float]]:
+        out: dict[str, tuple[float, float]] = {}
         for line in text.splitlines()[1:]:
             k, rel_err, abs_err = line.split(",")
             out[k] = (float(rel_err), float(abs_err))
@@ -281,7 +294,7 @@ def _kernel_check_same(rel, old, new):
         return [f"{rel} does not parse: {exc}"]
     if set(o) != set(n):
         return [f"{rel}: kernels {sorted(o)} != {sorted(n)}"]
-    bad = []
+    bad: list[str] = []
     for k in sorted(o):
         for what, a, b in zip(("relative", "absolute"), o[k], n[k]):
             if abs(math.log10(max(a, 1e-18)) - math.log10(max(b, 1e-18))) > math.log10(4):
@@ -289,19 +302,19 @@ def _kernel_check_same(rel, old, new):
     return bad
 
 
-def _bench_reference_fresh(root):
+def _bench_reference_fresh(root: Path | None) -> Texts:
     from .bench import reference
 
     return {"src/zener_sym/data/bench_reference.json": reference.dumps(reference.compute())}
 
 
-def _bench_reference_same(rel, old, new):
+def _bench_reference_same(rel: str, old: str, new: str) -> list[str]:
     from .bench import reference
 
     return reference.compare(json.loads(old), json.loads(new))
 
 
-def _lambda_series_fresh(root):
+def _lambda_series_fresh(root: Path | None) -> Texts:
     from .derivation import lambda_series as ls
 
     ctx = ls.derive()
@@ -324,7 +337,7 @@ _HAM1_FRESH, _HAM1_SAME = _table(
 
 #: Every artefact, in the order ``regen`` builds them (an artefact after those it reads: the
 #: ham1 table hashes the generated kernels, the envelopes use the tables).
-ARTEFACTS: tuple = (
+ARTEFACTS: tuple[Artefact, ...] = (
     Artefact("kernels", "the HAM formulas (Python) and the C99 kernels emitted from the derivation",
              # codegen.BUILDERS' files (named here: importing codegen loads SymPy)
              ("generated/ham0.py", "generated/ham1.py", "generated/c/zener_sym.h",

@@ -8,9 +8,13 @@ take the verdict of the claim about them.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import mpmath as mp
 import numpy as np
 import sympy as sp
+
+from zener_sym.typing import FloatArray
 
 from . import derived, printed
 from .printed import SYM
@@ -26,19 +30,25 @@ lam = SYM["lam"]
 LAM_HAM = np.round(np.linspace(0.0, 2.4, 25), 10)
 
 
-def _printed_fn(item_id):
+#: A form of lambda as a numpy function (SymPy's lambdify).
+LamFn = Callable[[FloatArray], FloatArray]
+
+
+def _printed_fn(item_id: str) -> LamFn:
     """The printed formula of an equation item as a numpy function of lambda."""
-    return sp.lambdify(lam, printed.parse(printed.by_id(item_id)), modules="numpy")
+    fn: LamFn = sp.lambdify(lam, printed.parse(printed.by_id(item_id)), modules="numpy")
+    return fn
 
 
-def _derived_fn(name):
+def _derived_fn(name: str) -> tuple[LamFn, str]:
     """A derived form of lambda as a numpy function, and its source."""
     expr, src = derived.get(name)
-    return sp.lambdify(lam, expr, modules="numpy"), src
+    fn: LamFn = sp.lambdify(lam, expr, modules="numpy")
+    return fn, src
 
 
 @check("claim:tau_Hertz")
-def _tau_hertz(item_id):
+def _tau_hertz(item_id: str) -> Verdict:
     dm0, src = derived.get("dm_lam0")
     val = hertz_constant() * dm0  # (2) in the scales (9): t_Hertz / T = 2.94 delta_m / (T V0)
     ok, ev = rounds_to(val, printed_number("tau_Hertz"))
@@ -50,7 +60,7 @@ def _tau_hertz(item_id):
 
 
 @check("claim:tau_d0")
-def _tau_d0(item_id):
+def _tau_d0(item_id: str) -> Verdict:
     f, src = derived.get("tau_d0_of_lam")
     val = sp.N(f.subs(lam, 0), 20)
     ok, ev = rounds_to(val, printed_number("tau_d0"))
@@ -59,7 +69,7 @@ def _tau_d0(item_id):
 
 
 @check("claim:omega0_lam0")
-def _omega0(item_id):
+def _omega0(item_id: str) -> Verdict:
     w, src = derived.get("omega0_lam0")
     ok, ev = rounds_to(sp.N(w, 20), printed_number("omega0_lam0"))
     return Verdict.claim(ok, f"$(5/4)^{{1/10}} = {float(sp.N(w)):.6f}$",
@@ -67,7 +77,7 @@ def _omega0(item_id):
 
 
 @check("claim:lambda_bound")
-def _lam_bound(item_id):
+def _lam_bound(item_id: str) -> Verdict:
     kl, src = derived.get("k_of_lam")
     g = sp.lambdify(lam, 4 / kl - lam**2, modules="mpmath")
     with mp.workdps(30):
@@ -79,7 +89,7 @@ def _lam_bound(item_id):
 
 
 @check("claim:eq24_5pct")
-def _eq24(item_id):
+def _eq24(item_id: str) -> Verdict:
     top = printed_value("eq24_5pct", 1)
     lams = np.unique(np.concatenate([np.linspace(0, 3, 13), np.geomspace(3.5, top, 10)]))
     est, src = _derived_fn("dm_interp_m32")
@@ -95,7 +105,7 @@ def _eq24(item_id):
                         f"Derived form: {src}.")
 
 
-def _ham_claim(model, field, bound_text, lams, label):
+def _ham_claim(model: str, field: str, bound_text: str, lams: FloatArray, label: str) -> Verdict:
     """A printed error bound of a HAM model's ``field`` against the exact ODE."""
     import zener_sym as zs  # noqa: PLC0415 (the facade imports the audit's layer lazily)
     if model not in zs.MODELS:
@@ -113,17 +123,17 @@ def _ham_claim(model, field, bound_text, lams, label):
 
 
 @check("claim:Fm_ham1_2.90pct")
-def _fm1(item_id):
+def _fm1(item_id: str) -> Verdict:
     return _ham_claim("ham1", "F_m", printed_number("Fm_ham1_2.90pct"), LAM_HAM, "$\\bar F_m$")
 
 
 @check("claim:impulse_ham1_3.95pct")
-def _imp1(item_id):
+def _imp1(item_id: str) -> Verdict:
     return _ham_claim("ham1", "impulse", printed_number("impulse_ham1_3.95pct"), LAM_HAM, "The impulse")
 
 
 @check("claim:Fm_ham0_5.11pct")
-def _fm0(item_id):
+def _fm0(item_id: str) -> Verdict:
     lo = printed_value("Fm_ham0_5.11pct", 1)
     lams = np.round(np.linspace(lo, 2.4, 18)[1:], 10)  # lambda > lo
     d0, src = derived.get("delta0")
@@ -145,7 +155,7 @@ def _fm0(item_id):
 
 
 @check("claim:eq70_10pct_1pct")
-def _eq70(item_id):
+def _eq70(item_id: str) -> Verdict:
     lams = np.round(np.linspace(0.1, 2.4, 24), 10)
     ex = exact_summary(tuple(lams)).xi
     fit = _printed_fn("70")(lams)
@@ -163,7 +173,7 @@ def _eq70(item_id):
 
 
 @check("claim:eq80_to_1.8")
-def _eq80(item_id):
+def _eq80(item_id: str) -> Verdict:
     top = printed_value("eq80_to_1.8")
     lams = np.round(np.linspace(0.0, top, 19), 10)
     e0, src = _derived_fn("e0_of_lam")
@@ -180,7 +190,7 @@ def _eq80(item_id):
 
 
 @check("claim:int_F2_poly")
-def _intF2(item_id):
+def _intF2(item_id: str) -> Verdict:
     lams = np.round(np.linspace(0.0, 0.5, 11), 10)
     ex = exact_summary(tuple(lams)).int_F2
     c = [printed_value("int_F2_poly", i) for i in range(3)]
@@ -197,7 +207,7 @@ def _intF2(item_id):
 
 
 @check("claim:fit55")
-def _fit55(item_id):
+def _fit55(item_id: str) -> Verdict:
     import zener_sym as zs  # noqa: PLC0415
     lams = np.round(np.linspace(0.0, 2.4, 13), 10)
     a, b, c = (printed_value("fit55", i) for i in range(3))
@@ -219,7 +229,7 @@ def _fit55(item_id):
 
 
 @check("claim:xi_V0^0.2")
-def _xi_v0(item_id):
+def _xi_v0(item_id: str) -> Verdict:
     lp, src = derived.get("lam_phys")
     ex = sp.simplify(SYM["V0"] * sp.diff(lp, SYM["V0"]) / lp)
     ok, ev = rounds_to(ex, printed_number("xi_V0^0.2"))
@@ -229,7 +239,7 @@ def _xi_v0(item_id):
 
 
 @check("claim:table1_lambda_range")
-def _table1(item_id):
+def _table1(item_id: str) -> Verdict:
     lp, src = derived.get("lam_phys")
     s = SYM
     tb = printed.TABLE1
@@ -246,6 +256,6 @@ def _table1(item_id):
 
 
 @check("55", "70")
-def _fit(item_id):
+def _fit(item_id: str) -> Verdict:
     """(55) and (70) are fits: their rows take the verdict of the matching claim."""
     return _fit55(item_id) if item_id == "55" else _eq70(item_id)

@@ -13,7 +13,7 @@ from .verdicts import Verdict, rounds_to
 
 
 @check("claim:mueller_linear")
-def _mueller_linear(item_id):
+def _mueller_linear(item_id: str) -> Verdict:
     """Mueller et al.'s paper is not available: each natural stiffness of the linear law
     (zener_sym.models.linear.STIFFNESS, derived in derivation/linear.py) is measured against the
     exact ODE on lambda in [0, 2] (below its own bound 2/sqrt(kappa))."""
@@ -52,7 +52,7 @@ def _mueller_linear(item_id):
 
 
 @check("claim:hunter_reed_k")
-def _hunter_reed_k(item_id):
+def _hunter_reed_k(item_id: str) -> Verdict:
     """k of xi = k V0^{3/5} derived in derivation/stress_waves.py (the energy a point force
     radiates into the glass half-space, with Hunter's sine (5) and Reed's sin^{3/2} (6)), then
     the readings that come nearest the printed numbers."""

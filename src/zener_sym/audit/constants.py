@@ -8,23 +8,26 @@ from __future__ import annotations
 import sympy as sp
 
 from . import derived, printed
-from .printed import SYM
+from .printed import SYM, Expr
 from .registry import check, hunter_factor, printed_decimal, printed_form, sentences, source
 from .texts import num, tex
 from .verdicts import Verdict, rounds_to
 
 lam, tau = SYM["lam"], SYM["tau"]
 _F_POWER = sp.Rational(3, 2)  # F-bar = delta-bar^(3/2), Eq. (45)
+#: (amplitude a, frequency b, power e) of a pulse a sin^e(b tau).
+_Pulse = tuple[Expr, Expr, Expr]
 
 
-def sine_power_parts(expr):
+def sine_power_parts(expr: Expr) -> _Pulse:
     """(amplitude, frequency, power) of a printed ``a*sin(b*tau)**e``."""
     amp, rest = expr.as_coeff_Mul()
     sine, power = rest.as_base_exp()
     return amp, sine.args[0].as_coeff_Mul()[0], power
 
 
-def _rounded_parts(item_id, amp, freq, power):
+def _rounded_parts(item_id: str, amp: Expr, freq: Expr,
+                   power: Expr) -> tuple[tuple[bool, bool, bool], tuple[str, str, str], _Pulse]:
     """The printed a sin^e(b tau) of ``item_id`` against the derived amplitude, frequency, power:
     ((ok_a, ok_f, ok_e), (sentence per part), (a, b, e) as printed)."""
     pa, pf, pe = sine_power_parts(printed_form(item_id))
@@ -36,7 +39,7 @@ def _rounded_parts(item_id, amp, freq, power):
 
 
 @check("50")
-def _eq50(item_id):
+def _eq50(item_id: str) -> Verdict:
     """(50): F-bar = delta_0^(3/2) at lambda = 0, (sin(omega0 tau)/omega0)^(3/2), omega0 = omega0(0)."""
     w, src = derived.get("omega0_lam0")
     amp = w ** -_F_POWER
@@ -61,7 +64,7 @@ def _eq50(item_id):
 
 
 @check("51")
-def _eq51(item_id):
+def _eq51(item_id: str) -> Verdict:
     """(51): the first-order F-bar at lambda = 0; delta_1 of (49) adds sin(omega0 tau)/(2 omega0)."""
     w, src = derived.get("omega0_lam0")
     pr = printed_form(item_id)
@@ -77,7 +80,7 @@ def _eq51(item_id):
         note_bad="the power is 3/2, not 3/5")
 
 
-def _hertz_pulse(item_id):
+def _hertz_pulse(item_id: str) -> _Pulse:
     """(amplitude, frequency, power) of F_hunter (52) / F_reed (53) in the scales (9), (44):
     from (3)-(6) with dm/(T V0) = (5/4)^(2/5)."""
     dmb, _ = derived.get("dm_lam0")
@@ -88,7 +91,7 @@ def _hertz_pulse(item_id):
 
 
 @check("52", "53")
-def _eq52_53(item_id):
+def _eq52_53(item_id: str) -> Verdict:
     amp, om, expo = _hertz_pulse(item_id)
     (ok_a, ok_o, ok_e), parts, _ = _rounded_parts(item_id, amp, om, expo)
     name = "F_hunter" if item_id == "52" else "F_reed"
@@ -105,7 +108,7 @@ def _eq52_53(item_id):
 
 
 @check("71")
-def _eq71(item_id):
+def _eq71(item_id: str) -> Verdict:
     ser = sp.series(printed_form("70"), lam, 0, 5).removeO()
     pr = printed_form(item_id)
     bad = []

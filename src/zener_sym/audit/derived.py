@@ -11,10 +11,14 @@ is ``not-checkable`` with that reason.
 from __future__ import annotations
 
 import functools
+from typing import TYPE_CHECKING
 
 import sympy as sp
 
-from .printed import SYM
+from .printed import SYM, Expr
+
+if TYPE_CHECKING:  # for the annotation only: the registry is imported lazily (offline SymPy work)
+    from zener_sym.derivation.registry import Derivation
 
 __all__ = ["NotAvailable", "get", "registry", "local", "LOCAL_NAMES"]
 
@@ -26,7 +30,7 @@ class NotAvailable(LookupError):
 
 
 @functools.lru_cache(maxsize=1)
-def registry():
+def registry() -> Derivation | str:
     """The derivation registry's Derivation, or the reason it is unavailable (a string)."""
     try:
         from zener_sym.derivation import registry as reg  # noqa: PLC0415 (offline import)
@@ -44,11 +48,11 @@ def registry():
 _ALIASES = {"m": "ms", "Estar": "Es", "m_star": "ms", "E_star": "Es"}
 
 
-def _to_audit_symbols(expr):
+def _to_audit_symbols(expr: Expr) -> Expr:
     """Replace the registry's symbols by the audit's (by ``.symbols`` key, then by name)."""
     if not isinstance(expr, sp.Basic):
         return expr
-    rep = {}
+    rep: dict[Expr, Expr] = {}
     reg = registry()
     if not isinstance(reg, str):
         for key, sym in getattr(reg, "symbols", {}).items():
@@ -62,10 +66,10 @@ def _to_audit_symbols(expr):
 
 
 @functools.lru_cache(maxsize=1)
-def local() -> dict:
+def local() -> dict[str, Expr]:
     """Short derivations of the zeroth-order, lambda = 0 and scaling forms (see module doc)."""
     x, Y = sp.symbols("x Y", positive=True)
-    out = {}
+    out: dict[str, Expr] = {}
     # (21)-(23): lambda -> 0, y dy/dx = -x^(3/2) with y(0) = 1, so y^2 = 1 - (4/5) x^(5/2).
     y2 = 1 + 2 * sp.integrate(-x ** sp.Rational(3, 2), (x, 0, x))
     dm0 = sp.solve(sp.Eq(y2, 0), x)[0]
@@ -116,7 +120,7 @@ def local() -> dict:
     return out
 
 
-def _scaling() -> dict:
+def _scaling() -> dict[str, Expr]:
     """Nondimensionalise Eq. (7) with (8): delta = T V0 dbar, t = T tau (Eq. 9)."""
     s = SYM
     ms, Es, R, V0, alpha, T = s["ms"], s["Es"], s["R"], s["V0"], s["alpha"], s["T"]
@@ -146,18 +150,18 @@ def _scaling() -> dict:
     return out
 
 
-def _normalise_physical(expr):
+def _normalise_physical(expr: Expr) -> Expr:
     """Express alpha and E* in materials, so that two routes that stop at different levels meet."""
     sc = local()
     return expr.subs({SYM["alpha"]: sc["alpha"], SYM["Es"]: sc["Es_of_materials"]})
 
 
 #: The names the local derivation provides.
-def LOCAL_NAMES():
+def LOCAL_NAMES() -> tuple[str, ...]:
     return tuple(sorted(local()))
 
 
-def get(name: str, *, prefer_registry: bool = True):
+def get(name: str, *, prefer_registry: bool = True) -> tuple[Expr, str]:
     """(expr, source) for a derived name: the registry's if it has it, else the local derivation's.
 
     Raises

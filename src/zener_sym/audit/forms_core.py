@@ -8,7 +8,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import derived, printed
-from .printed import SYM
+from .printed import SYM, Expr
 from .registry import check, compare_form, named_form, printed_form, sentences, source
 from .texts import tex
 from .verdicts import Verdict, compare, equal_up_to_factor
@@ -19,18 +19,18 @@ t, V0, ms, Es, R = (SYM[n] for n in ("t", "V0", "ms", "Es", "R"))
 LAM_OF_BETA = 2 * beta / (beta**2 + omega0**2)
 
 
-def linear_op(f):
+def linear_op(f: Expr) -> Expr:
     """The auxiliary linear operator L of Eq. (12)."""
     return f.diff(tau, 2) + (f + lam * f.diff(tau)) * k
 
 
-def nonlinear_op(f):
+def nonlinear_op(f: Expr) -> Expr:
     """The operator N of Eq. (13), the left side of Eq. (10)."""
     return f.diff(tau, 2) + f ** sp.Rational(3, 2) + lam * sp.diff(f ** sp.Rational(3, 2), tau)
 
 
 @check("1")
-def _eq1(item_id):
+def _eq1(item_id: str) -> Verdict:
     d = printed.d
     der = d(t).diff(t, 2) + SYM["kc"] * d(t) ** sp.Rational(3, 2)
     pr = printed_form(item_id)
@@ -42,7 +42,7 @@ def _eq1(item_id):
 
 
 @check("10")
-def _eq10(item_id):
+def _eq10(item_id: str) -> Verdict:
     # Substitute delta = T V0 dbar(tau), t = T tau into (7) with F of (8), divide by V0/T.
     d, db = printed.d, sp.Function("db")
     T = derived.get("T")[0]
@@ -60,14 +60,14 @@ def _eq10(item_id):
 
 
 @check("12")
-def _eq12(item_id):
+def _eq12(item_id: str) -> Verdict:
     return Verdict("not-checkable", "", sentences(
         "the auxiliary linear operator is a choice of the method, so there is nothing to derive; "
         "its use is checked through (15) and (28)"), "a choice, nothing to derive")
 
 
 @check("13")
-def _eq13(item_id):
+def _eq13(item_id: str) -> Verdict:
     e10 = printed_form("10")
     ok, ev = compare(printed_form(item_id), e10.lhs - e10.rhs)
     return Verdict.form(ok, tex(e10.lhs, item_id),
@@ -75,14 +75,14 @@ def _eq13(item_id):
 
 
 @check("14", "16", "37")
-def _definitions(item_id):
+def _definitions(item_id: str) -> Verdict:
     return Verdict("not-checkable", "", sentences(
         "a definition (the homotopy, the series ansatz or the variation-of-constants ansatz): "
         "nothing to derive"), "definition")
 
 
 @check("15")
-def _eq15(item_id):
+def _eq15(item_id: str) -> Verdict:
     d = printed.d
     der = sp.expand((1 - p) * linear_op(d(tau)) + p * nonlinear_op(d(tau)))
     return compare_form(item_id, der, r"$(1 - p)\mathcal{L} + p\mathcal{N}$ with $\mathcal{L}$, "
@@ -90,7 +90,7 @@ def _eq15(item_id):
 
 
 @check("17")
-def _eq17(item_id):
+def _eq17(item_id: str) -> Verdict:
     # delta'' = y dy/ddelta with y = delta'; d/dtau delta^(3/2) = (3/2) sqrt(delta) y
     yf = printed.yf
     der = yf(x) * yf(x).diff(x) + sp.Rational(3, 2) * lam * sp.sqrt(x) * yf(x) + x ** sp.Rational(3, 2)
@@ -99,7 +99,7 @@ def _eq17(item_id):
 
 
 @check("18")
-def _eq18(item_id):
+def _eq18(item_id: str) -> Verdict:
     yf = printed.yf
     der = sp.expand((yf(x) * yf(x).diff(x) + sp.Rational(3, 2) * lam * sp.sqrt(x) * yf(x)) / yf(x))
     return compare_form(item_id, der, r"(17) divided by $y$, without the $\bar\delta^{3/2}/y$ term "
@@ -107,25 +107,25 @@ def _eq18(item_id):
 
 
 @check("19")
-def _eq19(item_id):
+def _eq19(item_id: str) -> Verdict:
     yy = sp.Function("yy")
     sol = sp.dsolve(yy(x).diff(x) + sp.Rational(3, 2) * lam * sp.sqrt(x), yy(x), ics={yy(0): 1}).rhs
     return compare_form(item_id, sol, "SymPy's dsolve of (18) with $y(0) = 1$ (derived here)")
 
 
 @check("20")
-def _eq20(item_id):
+def _eq20(item_id: str) -> Verdict:
     return named_form(item_id, "dm_mthreehalves_inf", what="the root of $y = 0$ in (19)")
 
 
 @check("21")
-def _eq21(item_id):
+def _eq21(item_id: str) -> Verdict:
     yf = printed.yf
     return compare_form(item_id, yf(x) * yf(x).diff(x) + x ** sp.Rational(3, 2), r"(17) at $\lambda = 0$")
 
 
 @check("22")
-def _eq22(item_id):
+def _eq22(item_id: str) -> Verdict:
     yy = sp.Function("yy")
     sols = sp.dsolve(yy(x) * yy(x).diff(x) + x ** sp.Rational(3, 2), yy(x))
     sols = sols if isinstance(sols, list) else [sols]
@@ -141,12 +141,12 @@ def _eq22(item_id):
 
 
 @check("23")
-def _eq23(item_id):
+def _eq23(item_id: str) -> Verdict:
     return named_form(item_id, "dm_lam0", what="the root of $y = 0$ in (22)")
 
 
 @check("26", "27")
-def _series(item_id):
+def _series(item_id: str) -> Verdict:
     """(26), (27): the series in p of sqrt and of the 3/2 power, to O(p^3)."""
     func = sp.sqrt if item_id == "26" else (lambda z: z ** sp.Rational(3, 2))
     a, b = sp.symbols("a b", positive=True)
@@ -158,7 +158,7 @@ def _series(item_id):
                         note_bad=note)
 
 
-def _orders():
+def _orders() -> tuple[Expr, Expr]:
     """Orders p^0 and p^1 of the homotopy (14) with the series (16)."""
     f = printed.d0(tau) + p * printed.d1(tau)
     hom = (1 - p) * linear_op(f) + p * nonlinear_op(f)
@@ -167,14 +167,14 @@ def _orders():
 
 
 @check("28")
-def _eq28(item_id):
+def _eq28(item_id: str) -> Verdict:
     o0, _ = _orders()
     return compare_form(item_id, o0, "order $p^0$ of (14) with the series (16), by SymPy's series "
                         "(derived here)")
 
 
 @check("30")
-def _eq30(item_id):
+def _eq30(item_id: str) -> Verdict:
     o0, o1 = _orders()
     der = o1 + o0  # o1 = L(d1) + N(d0) - L(d0), o0 = L(d0) = 0 by (28)
     pr = printed_form(item_id)
@@ -184,7 +184,7 @@ def _eq30(item_id):
 
 
 @check("29", "31")
-def _ics(item_id):
+def _ics(item_id: str) -> Verdict:
     # delta(0) = d0(0) + p d1(0) = 0 and delta'(0) = d0'(0) + p d1'(0) = 1 for every p.
     a0, a1, b0, b1 = sp.symbols("a0 a1 b0 b1")
     eqs = sp.Poly(a0 + p * a1, p).all_coeffs()[::-1] + sp.Poly(b0 + p * b1 - 1, p).all_coeffs()[::-1]
@@ -199,7 +199,7 @@ def _ics(item_id):
 
 
 @check("34")
-def _eq34(item_id):
+def _eq34(item_id: str) -> Verdict:
     res = sp.simplify(linear_op(printed_form(item_id)).subs({k: beta**2 + omega0**2, lam: LAM_OF_BETA}))
     return Verdict.form(res == 0, r"e^{-\beta\tau}\left(c_1\sin(\omega_0\tau) + c_2\cos(\omega_0\tau)\right)"
                         r"\ \text{solves (28)}",
@@ -208,7 +208,7 @@ def _eq34(item_id):
 
 
 @check("36")
-def _eq36(item_id):
+def _eq36(item_id: str) -> Verdict:
     f_lam, src = derived.get("forcing")
     f = f_lam.subs(lam, LAM_OF_BETA)
     ok, ev = compare(printed_form(item_id).subs(lam, LAM_OF_BETA), f)
@@ -219,7 +219,7 @@ def _eq36(item_id):
 
 
 @check("38")
-def _eq38(item_id):
+def _eq38(item_id: str) -> Verdict:
     # Variation of constants: with d1 = e^(-beta tau)(A s + B c) and A' s + B' c = 0,
     # L(d1) = e^(-beta tau) omega0 (A' c - B' s) + (terms in the constraint and its derivative).
     A, B = sp.Function("A"), sp.Function("B")
@@ -243,7 +243,7 @@ def _eq38(item_id):
 
 
 @check("42")
-def _eq42(item_id):
+def _eq42(item_id: str) -> Verdict:
     # delta1 = e^(-beta tau)((C11 - C11(0)) s + (C12 - C12(0)) c) with the constraint: ICs (31)?
     A, B = sp.Function("A"), sp.Function("B")
     s_, c_ = sp.sin(omega0 * tau), sp.cos(omega0 * tau)
@@ -263,7 +263,7 @@ def _eq42(item_id):
 
 
 @check("45")
-def _eq45(item_id):
+def _eq45(item_id: str) -> Verdict:
     # F / F_scale = (4/3) Es sqrt(R) (T V0 dbar)^(3/2) / (ms V0 / T)
     T = derived.get("T")[0]
     Fs, src = derived.get("F_scale")

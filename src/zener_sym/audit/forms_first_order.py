@@ -2,28 +2,32 @@
 C11^d, C12^d (the variation-of-constants integrals and their values at 0)."""
 from __future__ import annotations
 
+from typing import Any
+
 import mpmath as mp
 import sympy as sp
 
 from . import derived, printed
 from .forms_core import LAM_OF_BETA
-from .printed import SYM
+from .printed import SYM, Expr
 from .registry import check, compare_form, hyper, printed_form, sentences, source
 from .texts import num, tex
 from .verdicts import Verdict, compare, sci
 
 lam, tau, beta, omega0, x, y = (SYM[n] for n in ("lam", "tau", "beta", "omega0", "x", "y"))
+#: An mpmath complex number (mpmath ships no type information).
+Mpc = Any
 
 
 @check("39")
-def _eq39(item_id):
+def _eq39(item_id: str) -> Verdict:
     expr, src = derived.get("C11_prime")
     f, _ = derived.get("forcing")
     return compare_form(item_id, expr, src, what=r"solving (38) for $C_{11}'$ ($C_{12}'$ likewise)",
                         transform=lambda e: e.subs(SYM["F"], f))
 
 
-def _elementary(expr):
+def _elementary(expr: Expr) -> Expr:
     """The elementary part of an expression in sqrt(sin): drop the terms with fractional powers."""
     s_ = sp.sin(omega0 * tau)
     terms = sp.Add.make_args(sp.expand(expr))
@@ -32,7 +36,7 @@ def _elementary(expr):
 
 
 @check("40", "41")
-def _eq40_41(item_id):
+def _eq40_41(item_id: str) -> Verdict:
     which = "C11" if item_id == "40" else "C12"
     prime_lam, src = derived.get(f"{which}_prime")
     prime = sp.expand(prime_lam.subs(lam, LAM_OF_BETA))
@@ -84,7 +88,7 @@ def _eq40_41(item_id):
                      r" ($C_{124}$'s normalisation is confirmed by its own check)")))
 
 
-def _limit0(expr, w0=1, b=0, lam_v=0):
+def _limit0(expr: Expr, w0: float = 1, b: float = 0, lam_v: float = 0) -> tuple[Mpc, Mpc]:
     """tau -> 0+ limit of a printed expression of tau (mpmath, 30 digits, two small tau)."""
     f = sp.lambdify(tau, hyper(expr).subs({omega0: w0, beta: b, lam: lam_v}), modules="mpmath")
     with mp.workdps(30):
@@ -93,7 +97,7 @@ def _limit0(expr, w0=1, b=0, lam_v=0):
 
 
 @check("49")
-def _eq49(item_id):
+def _eq49(item_id: str) -> Verdict:
     # delta1 must vanish at tau = 0 (31). Printed (49): delta1 = sin/(2 omega0) + C11^d sin + C12^d cos,
     # so delta1(0+) = C12^d(0+); evaluate it, with the printed C12^d and with its power 7/5 -> 7/2.
     s_ = sp.sin(omega0 * tau)
@@ -114,11 +118,12 @@ def _eq49(item_id):
         note_bad=r"a term $-C_{12}^d(0)\cos(\omega_0\tau)$ is missing ($C_{12}^d(0^+) \neq 0$)")
 
 
-def _hyper_compare(a, b, n=5):
+def _hyper_compare(a: Expr, b: Expr, n: int = 5) -> tuple[bool, str]:
     """Compare two expressions of tau, omega0 (possibly with 2F1) with mpmath at 30 digits."""
     fa = sp.lambdify((tau, omega0), a, modules="mpmath")
     fb = sp.lambdify((tau, omega0), b, modules="mpmath")
-    worst, at = 0.0, None
+    worst = 0.0
+    at: tuple[float, float, complex, complex] | None = None
     with mp.workdps(30):
         for i in range(n):
             w0 = mp.mpf("0.7") + mp.mpf(i) / 10
@@ -130,13 +135,14 @@ def _hyper_compare(a, b, n=5):
     if worst < mp.mpf(10) ** -20:
         return True, (r"they agree at %d points in $(0, \pi/\omega_0)$ (largest relative difference "
                       r"%s)" % (n, sci(worst)))
+    assert at is not None  # worst >= 1e-20 > 0, so some point set it
     return False, (r"at $\tau = %.4g$, $\omega_0 = %.4g$ the printed form gives %s and the derived "
                    r"one %s (relative difference %s)" % (at[0], at[1], num(at[2], 8), num(at[3], 8),
                                                            sci(worst)))
 
 
 @check("C11^d", "C12^d")
-def _c_d(item_id):
+def _c_d(item_id: str) -> Verdict:
     which = "C11" if item_id == "C11^d" else "C12"
     prime, src = derived.get(f"{which}_prime")
     prime0 = sp.simplify(prime.subs({lam: 0, beta: 0}))
@@ -151,7 +157,7 @@ def _c_d(item_id):
 
 
 @check("C124")
-def _c124(item_id):
+def _c124(item_id: str) -> Verdict:
     # Is d/dtau of the printed C124 a constant multiple of e^(-beta tau/2) sin^(5/2)?
     dpr = sp.diff(hyper(printed_form(item_id)), tau)
     target = sp.exp(-beta * tau / 2) * sp.sin(omega0 * tau) ** sp.Rational(5, 2)
@@ -175,7 +181,7 @@ def _c124(item_id):
 
 
 @check("C113", "C114", "C123")
-def _garbled_c(item_id):
+def _garbled_c(item_id: str) -> Verdict:
     return Verdict("garbled", "", sentences(
         r"$G$ is printed with three arguments run together and "
         r"misplaced fractions, e.g. $G(1, \frac{i\beta}{2}, \frac{1}{4\omega_0} - \frac{1}{4}"
@@ -184,7 +190,7 @@ def _garbled_c(item_id):
 
 
 @check("C12(0)")
-def _c12_0(item_id):
+def _c12_0(item_id: str) -> Verdict:
     # (42) subtracts C12(0), the value at tau = 0+ of the paper's own C12(tau) of (41). At
     # lambda = 0 every term of (41) is readable: C12 = -C121 + omega0^(-3/2) C124 (C123 has a
     # factor lambda). Compare that limit with the printed C12(0) at lambda = 0.
@@ -207,7 +213,7 @@ def _c12_0(item_id):
 
 
 @check("C11(0)")
-def _c11_0(item_id):
+def _c11_0(item_id: str) -> Verdict:
     # At lambda = 0 the printed C11(0) must be C11^d(0+) of Sec. 3.2; for lambda > 0 it depends on
     # the garbled C113, C114, so only the lambda = 0 value can be compared.
     pr = printed_form(item_id).subs({beta: 0, lam: 0})
@@ -222,7 +228,7 @@ def _c11_0(item_id):
 
 
 @check("C111", "C112", "C121", "C122")
-def _elementary_c(item_id):
+def _elementary_c(item_id: str) -> Verdict:
     s_, c_ = sp.sin(omega0 * tau), sp.cos(omega0 * tau)
     integrand = {"C111": s_ * c_, "C112": c_**2, "C121": s_**2, "C122": s_ * c_}[item_id]
     d = sp.simplify(sp.diff(printed_form(item_id), tau) - integrand)

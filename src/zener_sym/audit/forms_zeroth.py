@@ -41,13 +41,13 @@ NAMED = {
 
 
 @check(*NAMED)
-def _named(item_id):
+def _named(item_id: str) -> Verdict:
     name, what, note_bad = NAMED[item_id]
     return named_form(item_id, name, what=what, note_bad=note_bad)
 
 
 @check("58")
-def _eq58(item_id):
+def _eq58(item_id: str) -> Verdict:
     expr, src = derived.get("tau_dc0")
     pr = printed_form(item_id)
     ok_root = sp.simplify(derived.get("delta0_dot")[0].subs(tau, pr)) == 0
@@ -57,7 +57,7 @@ def _eq58(item_id):
 
 
 @check("78")
-def _eq78(item_id):
+def _eq78(item_id: str) -> Verdict:
     expr, src = derived.get("e0")
     pr = printed_form(item_id).subs({tau: sp.pi / omega0, k: beta**2 + omega0**2, lam: LAM_OF_BETA})
     ok, ev = compare(pr, expr)
@@ -69,7 +69,7 @@ def _eq78(item_id):
 
 
 @check("79")
-def _eq79(item_id):
+def _eq79(item_id: str) -> Verdict:
     expr, src = derived.get("e0")
     pr = printed_form(item_id).subs({k: beta**2 + omega0**2, lam: LAM_OF_BETA})
     ok, ev = compare(pr, expr)
@@ -78,7 +78,7 @@ def _eq79(item_id):
 
 
 @check("81")
-def _eq81(item_id):
+def _eq81(item_id: str) -> Verdict:
     kl, src = derived.get("k_of_lam")
     der = 4 / kl - lam**2  # lam <= 2/sqrt(k)  <=>  4/k - lam^2 >= 0
     return compare_form(item_id, der, src, what=r"$\lambda < 2/\sqrt{k}$ written as $4/k - \lambda^2 > 0$",
@@ -86,6 +86,6 @@ def _eq81(item_id):
 
 
 @check("omega0(0)")
-def _omega0_lam0(item_id):
+def _omega0_lam0(item_id: str) -> Verdict:
     w, src = derived.get("omega0_lam0")
     return compare_form(item_id, w, src, what=r"$\omega_0$ of (33) at $\lambda = 0$, $\sqrt{k(0)}$")

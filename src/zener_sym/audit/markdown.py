@@ -10,11 +10,13 @@ from __future__ import annotations
 
 import functools
 import re
+from collections.abc import Sequence
 from pathlib import Path
 
 from .printed import by_id
 from .run import TEXT_DERIVED, run_audit, summary_line
 from .titles import CLAIM_TITLES, TITLES
+from .verdicts import Result
 
 __all__ = ["markdown", "audit_md_path", "cached_results", "slug", "heading", "PAPER_TITLE"]
 
@@ -48,7 +50,7 @@ each section; the paper measured against FEM.
 
 
 @functools.lru_cache(maxsize=1)
-def cached_results():
+def cached_results() -> tuple[Result, ...]:
     """The audit of every item, computed once per process (the report and tests reuse it)."""
     return tuple(run_audit())
 
@@ -59,7 +61,7 @@ def slug(text: str) -> str:
     return s.replace(" ", "-")
 
 
-def heading(r) -> str:
+def heading(r: Result) -> str:
     """The section heading of a result (plain words, so that its anchor is predictable)."""
     if r.kind == "claim":
         eq, title = CLAIM_TITLES.get(r.id, ("", r.id.split(":", 1)[1]))
@@ -74,7 +76,7 @@ def _one_line(s: str) -> str:
     return " ".join(str(s).split())
 
 
-def _table_note(r) -> str:
+def _table_note(r: Result) -> str:
     if r.kind == "claim" or r.id in TEXT_DERIVED:
         note = r.derived or r.note
     else:
@@ -86,7 +88,7 @@ def _display(latex: str) -> list[str]:
     return ["$$", latex, "$$", ""]
 
 
-def _section(r) -> list[str]:
+def _section(r: Result) -> list[str]:
     out = [f"### {heading(r)}", ""]
     verdict = f"Verdict: {r.verdict}." + (f" {_capital(r.note)}." if r.note else "")
     if r.kind == "claim":
@@ -119,7 +121,7 @@ def _capital(s: str) -> str:
     return s[:1].upper() + s[1:]
 
 
-def markdown(results) -> str:
+def markdown(results: Sequence[Result]) -> str:
     """AUDIT.md for a list of :class:`~.verdicts.Result` (deterministic)."""
     groups = [("Equations", [r for r in results if r.kind == "equation"]),
               ("Definitions", [r for r in results if r.kind == "definition"]),

@@ -13,12 +13,17 @@ Nothing here is corrected: the corrections live in the derivation and in the aud
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any, TypedDict
 
 import sympy as sp
 
 from ._raw import RAW_EQUATIONS
 
-__all__ = ["Printed", "ITEMS", "NS", "SYM", "by_id", "parse", "numbers"]
+__all__ = ["Printed", "ITEMS", "NS", "SYM", "by_id", "parse", "numbers", "Expr"]
+
+#: A SymPy expression. SymPy ships no type information, so this is ``Any`` under a name that says
+#: what the value is.
+Expr = Any
 
 # Dimensionless core (positive: the audit samples them in their physical range).
 lam, tau, k, beta, omega0, p, x, y, dm = sp.symbols("lam tau k beta omega0 p x y dm", positive=True)
@@ -55,15 +60,15 @@ class Printed:
     reads: str = ""  # which quantity/relation the parse is (for the table)
 
 
-def _eq(n, parse, reads=""):
+def _eq(n: int, parse: str | None, reads: str = "") -> Printed:
     return Printed(str(n), "equation", RAW_EQUATIONS[str(n)], parse, reads)
 
 
-def _def(name, raw, parse, reads=""):
+def _def(name: str, raw: str, parse: str | None, reads: str = "") -> Printed:
     return Printed(name, "definition", raw, parse, reads)
 
 
-def _claim(name, raw, numbers, reads):
+def _claim(name: str, raw: str, numbers: str, reads: str) -> Printed:
     # ``numbers``: the printed number(s) of the claim, comma-separated, digits exactly as printed
     return Printed("claim:" + name, "claim", raw, numbers, reads)
 
@@ -297,9 +302,24 @@ ITEMS: tuple[Printed, ...] = (
 )
 
 
+class Table1(TypedDict):
+    """Table 1 of the appendix: the sphere's (1) and the plate's (2) materials, the sphere's radius
+    and the appendix's ranges of impact speed and plate thickness, in SI units."""
+
+    R: float
+    E1: float
+    nu1: float
+    rho1: float
+    E2: float
+    nu2: float
+    rho2: float
+    V0_range: tuple[float, float]
+    H_range: tuple[float, float]
+
+
 #: Table 1 of the appendix (FEM materials) and the appendix's ranges, as printed, in SI units.
-TABLE1 = {"R": 0.9e-3, "E1": 12.23e9, "nu1": 0.21, "rho1": 879.0, "E2": 73e9, "nu2": 0.21,
-          "rho2": 2500.0, "V0_range": (1.0, 20.0), "H_range": (0.18e-3, 0.75e-3)}
+TABLE1: Table1 = {"R": 0.9e-3, "E1": 12.23e9, "nu1": 0.21, "rho1": 879.0, "E2": 73e9, "nu2": 0.21,
+                  "rho2": 2500.0, "V0_range": (1.0, 20.0), "H_range": (0.18e-3, 0.75e-3)}
 
 
 def by_id(item_id: str) -> Printed:
@@ -315,7 +335,7 @@ def numbers(item: Printed) -> list[str]:
     return [n.strip() for n in (item.parse or "").split(",") if n.strip()]
 
 
-def parse(item: Printed, evaluate: bool = True):
+def parse(item: Printed, evaluate: bool = True) -> Expr | list[str] | None:
     """The SymPy form of the printed transcription (None when there is none).
 
     ``evaluate=False`` keeps the printed structure for display (``(5/4)^{-3/2}`` stays a power).

@@ -8,30 +8,38 @@ approximations of Eq. (10), so the ODE is the right yardstick.
 from __future__ import annotations
 
 import functools
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from zener_sym.typing import FloatArray, RealArrayLike, RealLike
+
 from . import printed
+
+if TYPE_CHECKING:  # the facade is imported lazily (it imports this layer's modules lazily too)
+    from zener_sym.api import Summary
 
 __all__ = ["exact_summary", "delta_m_exact", "printed_number", "printed_value", "bound_readings",
            "worst_text", "ham_field", "pct"]
 
 
 @functools.lru_cache(maxsize=None)
-def exact_summary(lams: tuple):
+def exact_summary(lams: tuple[float, ...]) -> Summary:
     """``zs.summary`` of the exact model at the lambdas ``lams`` (cached: several claims share grids)."""
     import zener_sym as zs  # noqa: PLC0415 (the facade imports the audit's layer lazily)
-    return zs.summary(np.array(lams), model="exact")
+    out: Summary = zs.summary(np.array(lams), model="exact")
+    return out
 
 
-def ham_field(model: str, field: str, lams):
+def ham_field(model: str, field: str, lams: RealArrayLike) -> FloatArray:
     """One summary field (``F_m``, ``impulse``, ``tau_d``, ...) of a registered model."""
     import zener_sym as zs  # noqa: PLC0415
-    return getattr(zs.summary(lams, model=model), field)
+    values: FloatArray = getattr(zs.summary(lams, model=model), field)
+    return values
 
 
-def delta_m_exact(lam_value: float, rtol: float = 1e-11) -> float:
+def delta_m_exact(lam_value: RealLike, rtol: float = 1e-11) -> float:
     """delta_m of Eq. (10) by integrating the compression phase only (DOP853, cheap at large lambda).
 
     Eq. (10) integrated once with Eq. (47): delta' + lambda delta^(3/2) = 1 - I-bar = w and
@@ -40,16 +48,18 @@ def delta_m_exact(lam_value: float, rtol: float = 1e-11) -> float:
     """
     lv = float(lam_value)
 
-    def rhs(t, y):
+    def rhs(t: float, y: FloatArray) -> list[float]:
         d = max(y[0], 0.0)  # guard: a trial step may dip below 0
         F = d * np.sqrt(d)
         return [y[1] - lv * F, -F]
 
-    def v_zero(t, y):
+    def v_zero(t: float, y: FloatArray) -> float:
         d = max(y[0], 0.0)
-        return y[1] - lv * d * np.sqrt(d)
+        speed: float = y[1] - lv * d * np.sqrt(d)  # delta' (Eq. 10 integrated once)
+        return speed
 
-    v_zero.terminal, v_zero.direction = True, -1
+    # solve_ivp reads these two attributes of an event function; mypy knows no such attributes
+    v_zero.terminal, v_zero.direction = True, -1  # type: ignore[attr-defined]
     sol = solve_ivp(rhs, (0.0, 100.0), [0.0, 1.0], method="DOP853", rtol=rtol, atol=1e-15,
                     events=v_zero)
     if sol.status != 1:
@@ -67,12 +77,12 @@ def printed_value(claim_name: str, i: int = 0) -> float:
     return float(printed_number(claim_name, i))
 
 
-def pct(x, dec: int) -> str:
+def pct(x: float, dec: int) -> str:
     """A fraction as a percentage with ``dec`` decimals."""
     return f"{100 * x:.{dec}f}%"
 
 
-def worst_text(worst, at) -> str:
+def worst_text(worst: float, at: float) -> str:
     """The decisive number of an error claim: 'largest relative error 2.905% at lambda = 2.2'."""
     return f"largest relative error {100 * worst:.3f}% at $\\lambda = {at:.3g}$"
 

@@ -8,25 +8,30 @@ imports them all.
 """
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
+from typing import SupportsFloat
 
 import sympy as sp
 
 from . import derived, printed
+from .printed import Expr
 from .texts import tex
 from .verdicts import Verdict, compare
 
-__all__ = ["CHECKS", "check", "printed_form", "printed_decimal", "printed_float", "hertz_constant",
-           "hunter_factor",
+__all__ = ["CHECKS", "Check", "check", "printed_form", "printed_decimal", "printed_float",
+           "hertz_constant", "hunter_factor",
            "sentences", "source", "compare_form", "named_form", "hyper"]
 
+#: A check: called with the item id, returns the item's verdict.
+Check = Callable[[str], Verdict]
+
 #: item id -> check function (called with the item id, returns a Verdict).
-CHECKS: dict[str, Callable[[str], Verdict]] = {}
+CHECKS: dict[str, Check] = {}
 
 
-def check(*ids: str):
+def check(*ids: str) -> Callable[[Check], Check]:
     """Register the decorated function as the check of each item in ``ids``."""
-    def deco(fn):
+    def deco(fn: Check) -> Check:
         for i in ids:
             if i in CHECKS:
                 raise ValueError(f"item {i!r} has two checks: {CHECKS[i].__name__} and {fn.__name__}")
@@ -35,12 +40,12 @@ def check(*ids: str):
     return deco
 
 
-def printed_form(item_id: str):
+def printed_form(item_id: str) -> Expr:
     """The SymPy form of the printed transcription of ``item_id`` (:func:`.printed.parse`)."""
     return printed.parse(printed.by_id(item_id))
 
 
-def printed_decimal(value) -> str:
+def printed_decimal(value: SupportsFloat) -> str:
     """A printed number of a transcription as the decimal string it was printed as ('0.966').
 
     The transcription holds plain decimals without trailing zeros, so ``%g`` gives the digits
@@ -49,16 +54,17 @@ def printed_decimal(value) -> str:
     return f"{float(value):g}"
 
 
-def printed_float(item_id: str):
+def printed_float(item_id: str) -> Expr:
     """The one decimal number printed in ``item_id``, as transcribed (read unevaluated, so that
     SymPy does not fold it into other constants)."""
-    floats = printed.parse(printed.by_id(item_id), evaluate=False).atoms(sp.Float)
+    form: Expr = printed.parse(printed.by_id(item_id), evaluate=False)
+    floats = form.atoms(sp.Float)
     if len(floats) != 1:
         raise ValueError(f"item {item_id!r} prints {len(floats)} decimal numbers, not one")
     return floats.pop()
 
 
-def hertz_constant():
+def hertz_constant() -> Expr:
     """The printed 2.94 of (2): T_Hertz = 2.94 delta_m / V0 (Hertz's duration constant)."""
     return printed_float("2")
 
@@ -68,7 +74,7 @@ def hunter_factor() -> str:
     return printed_decimal(printed_float("4"))
 
 
-def sentences(*parts) -> str:
+def sentences(*parts: str) -> str:
     """Evidence text: the non-empty parts as sentences (first letter up, full stop)."""
     out = []
     for part in parts:
@@ -85,8 +91,9 @@ def source(src: str) -> str:
     return f"derived form: {src}"
 
 
-def compare_form(item_id, derived_expr, source_, what="", transform=None, note_ok="",
-                 note_bad="") -> Verdict:
+def compare_form(item_id: str, derived_expr: Expr, source_: str, what: str = "",
+                 transform: Callable[[Expr], Expr] | None = None, note_ok: str = "",
+                 note_bad: str = "") -> Verdict:
     """Printed form of ``item_id`` (optionally transformed) against ``derived_expr``."""
     pr = printed_form(item_id)
     ok, ev = compare(pr if transform is None else transform(pr), derived_expr)
@@ -94,12 +101,13 @@ def compare_form(item_id, derived_expr, source_, what="", transform=None, note_o
                         note_bad=note_bad, note_ok=note_ok)
 
 
-def named_form(item_id, name, *, what="", note_ok="", note_bad="") -> Verdict:
+def named_form(item_id: str, name: str, *, what: str = "", note_ok: str = "",
+               note_bad: str = "") -> Verdict:
     """Printed form of ``item_id`` against the derived form called ``name`` (:func:`.derived.get`)."""
     expr, src = derived.get(name)
     return compare_form(item_id, expr, src, what=what, note_ok=note_ok, note_bad=note_bad)
 
 
-def hyper(expr):
+def hyper(expr: Expr) -> Expr:
     """The paper's ``G(a, b, c, z)`` as SymPy's hypergeometric 2F1(a, b; c; z)."""
     return expr.replace(printed.G, lambda a, b, c, z: sp.hyper([a, b], [c], z))

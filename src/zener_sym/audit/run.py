@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Collection, Sequence
 
 from . import derived
 from .checks import CHECKS
@@ -79,12 +80,14 @@ def audit_item(item: Printed) -> Result:
                   _derived_text(item, verdict.derived), verdict.evidence, verdict.note)
 
 
-def run_audit(ids=None) -> list[Result]:
+def run_audit(ids: Collection[str] | None = None) -> list[Result]:
     """All items (or those in ``ids``), in the order of :data:`printed.ITEMS`."""
     return [audit_item(it) for it in ITEMS if ids is None or it.id in ids]
 
 
-def summary_line(results) -> str:
+def summary_line(results: Sequence[Result]) -> str:
+    """'N items audited: n1 consistent, n2 typo, ...' (the verdicts that occur, in the order of
+    :data:`.verdicts.VERDICTS`)."""
     counts = {v: sum(r.verdict == v for r in results) for v in VERDICTS}
     body = ", ".join(f"{n} {v}" for v, n in counts.items() if n)
     return f"{len(results)} items audited: {body}."

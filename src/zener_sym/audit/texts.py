@@ -8,9 +8,13 @@ C113 in (40), ...) are given their meaning per item in :data:`PLACEHOLDERS`.
 """
 from __future__ import annotations
 
+from typing import SupportsComplex, SupportsFloat
+
 import sympy as sp
 
 from zener_sym.derivation.printing import mathtext_safe, paper_latex
+
+from .printed import Expr
 
 __all__ = ["tex", "dim_tex", "PLACEHOLDERS", "num"]
 
@@ -19,7 +23,7 @@ _I_BAR = r"\bar I"
 _INT_F2 = r"\left(\int \bar F^2\, d\tau\right)"  # bracketed: a factor among others
 
 #: Per item: (symbol names, function names) of the placeholders the transcription uses.
-PLACEHOLDERS: dict = {
+PLACEHOLDERS: dict[str, tuple[dict[str, str], dict[str, tuple[str, bool]]]] = {
     **{n: ({"x": _DB}, {}) for n in ("17", "18", "19", "21", "22")},
     "34": ({"x": "c_2", "y": "c_1"}, {}),
     "38": ({"F": r"f(\tau)"}, {}),
@@ -38,24 +42,25 @@ for _n in ("1", "7", "8"):
     PLACEHOLDERS[_n] = ({}, dict(_PHYSICAL_D))
 
 
-def tex(expr, item_id: str | None = None, literal: bool = False) -> str:
+def tex(expr: Expr, item_id: str | None = None, literal: bool = False) -> str:
     """LaTeX (without $) of a SymPy expression (or tuple, or relation) in the paper's notation;
     ``literal`` for a transcription (kept in its printed order and grouping)."""
-    names, functions = PLACEHOLDERS.get(item_id, ({}, {}))
+    names, functions = PLACEHOLDERS.get(item_id, ({}, {})) if item_id is not None else ({}, {})
     if isinstance(expr, (tuple, list)):
         return r"\left(" + ", ".join(tex(e, item_id, literal) for e in expr) + r"\right)"
     if isinstance(expr, sp.Equality):
         return f"{tex(expr.lhs, item_id, literal)} = {tex(expr.rhs, item_id, literal)}"
     try:
-        return paper_latex(sp.sympify(expr), names=names, functions=functions, literal=literal)
+        out: str = paper_latex(sp.sympify(expr), names=names, functions=functions, literal=literal)
     except Exception:  # an odd (mutated) transcription must never cost a verdict
-        return mathtext_safe(sp.latex(expr))
+        out = mathtext_safe(sp.latex(expr))
+    return out
 
 
 _DIM_NAMES = {"M": r"\mathrm{M}", "L": r"\mathrm{L}", "Ts": r"\mathrm{T}"}
 
 
-def dim_tex(mono) -> str:
+def dim_tex(mono: Expr | None) -> str:
     """A dimension monomial in M, L, Ts as LaTeX (``M L T^{-2}``); ``1`` for dimensionless."""
     if mono is None:
         return r"\text{none (terms of different dimensions)}"
@@ -81,7 +86,7 @@ def _real(v: float, digits: int) -> str:
     return f"${mant} \\times 10^{{{int(ex)}}}$"
 
 
-def num(x, digits: int = 4) -> str:
+def num(x: complex | SupportsComplex | SupportsFloat, digits: int = 4) -> str:
     """A real number with ``digits`` significant digits (a complex one as a + bi); powers of ten
     as inline math, never Python's e-notation."""
     z = complex(x)

@@ -11,7 +11,7 @@ __all__ = ["TITLES", "CLAIM_TITLES"]
 
 _DB = r"\bar\delta"
 
-TITLES = {
+TITLES: dict[str, tuple[str, str]] = {
     "1": ("Hertz's equation of impact", "{}"),
     "2": ("T_Hertz, Hertz's contact duration", r"T_{Hertz} = {}"),
     "3": ("delta_m, Hertz's maximum compression", r"\delta_m = {}"),
@@ -113,7 +113,7 @@ TITLES = {
 }
 
 #: Claims: the equation number they are about (for the heading) and a short title.
-CLAIM_TITLES = {
+CLAIM_TITLES: dict[str, tuple[str, str]] = {
     "claim:tau_Hertz": ("(2)", "Hertz's duration 3.214"),
     "claim:tau_d0": ("(54)", "tau_d = 3.072 at lambda = 0"),
     "claim:omega0_lam0": ("(33)", "omega_0 = 1.023 at lambda = 0"),

@@ -8,13 +8,14 @@ form or reference available; the note says why).
 from __future__ import annotations
 
 import random
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import asdict, dataclass
-from typing import NamedTuple
+from typing import NamedTuple, SupportsFloat
 
 import mpmath as mp
 import sympy as sp
 
-from .printed import SYM
+from .printed import SYM, Expr
 
 __all__ = ["Result", "Verdict", "VERDICTS", "compare", "equal_up_to_factor", "dimension", "rounds_to",
            "DIMS", "MASS", "LENGTH", "TIME", "sample_point", "sci"]
@@ -34,11 +35,11 @@ class Result:
     evidence: str
     note: str
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         if self.verdict not in VERDICTS:
             raise ValueError(f"verdict {self.verdict!r} is not one of {VERDICTS}")
 
-    def as_dict(self) -> dict:
+    def as_dict(self) -> dict[str, str]:
         return asdict(self)
 
 
@@ -65,27 +66,29 @@ class Verdict(NamedTuple):
 
 # Sampling ranges: physical ranges of each symbol, so that square roots stay real
 # (0 < omega0 tau < pi, lam below the critical 2.44, Poisson ratios in (0, 1/2)).
-_RANGES = {"lam": (0.05, 2.3), "tau": (0.05, 1.2), "k": (0.6, 1.1), "beta": (0.05, 0.9),
-           "omega0": (0.3, 1.1), "p": (0.1, 0.9), "x": (0.05, 0.9), "y": (0.1, 1.0),
-           "dm": (0.5, 1.5), "nu1": (0.1, 0.45), "nu2": (0.1, 0.45), "t": (0.05, 1.0)}
+_RANGES: dict[str, tuple[float, float]] = {
+    "lam": (0.05, 2.3), "tau": (0.05, 1.2), "k": (0.6, 1.1), "beta": (0.05, 0.9),
+    "omega0": (0.3, 1.1), "p": (0.1, 0.9), "x": (0.05, 0.9), "y": (0.1, 1.0),
+    "dm": (0.5, 1.5), "nu1": (0.1, 0.45), "nu2": (0.1, 0.45), "t": (0.05, 1.0)}
 _DEFAULT_RANGE = (0.5, 3.0)
 
 # Test functions for unknown functions of tau in relations: smooth, positive on the sample range.
-_TEST_FUNCS = {"d": lambda s: 0.3 + s / 2 + s**2 / 7, "d0": lambda s: 0.4 + s / 3 + s**2 / 5,
-               "d1": lambda s: 0.1 + s / 9 - s**2 / 11, "yf": lambda s: 1 - s**2 / 3,
-               "C11": lambda s: 0.2 + s / 5, "C12": lambda s: -0.3 + s**2 / 6}
+_TEST_FUNCS: dict[str, Callable[[Expr], Expr]] = {
+    "d": lambda s: 0.3 + s / 2 + s**2 / 7, "d0": lambda s: 0.4 + s / 3 + s**2 / 5,
+    "d1": lambda s: 0.1 + s / 9 - s**2 / 11, "yf": lambda s: 1 - s**2 / 3,
+    "C11": lambda s: 0.2 + s / 5, "C12": lambda s: -0.3 + s**2 / 6}
 
 
-def sample_point(symbols, rng) -> dict:
+def sample_point(symbols: Iterable[Expr], rng: random.Random) -> dict[Expr, Expr]:
     """A random point (mpmath 30-digit values) for ``symbols`` in their physical ranges."""
-    pt = {}
+    pt: dict[Expr, Expr] = {}
     for s in sorted(symbols, key=lambda s: s.name):
         lo, hi = _RANGES.get(s.name, _DEFAULT_RANGE)
         pt[s] = sp.Float(rng.uniform(lo, hi), 30)
     return pt
 
 
-def _with_test_functions(expr):
+def _with_test_functions(expr: Expr) -> Expr:
     """Replace applied undefined functions (d(tau), C11(tau), ...) by explicit test functions."""
     rep = {}
     for f in expr.atoms(sp.core.function.AppliedUndef):
@@ -95,14 +98,14 @@ def _with_test_functions(expr):
     return expr.subs(rep).doit() if rep else expr
 
 
-def _num(expr, pt):
+def _num(expr: Expr, pt: Mapping[Expr, Expr]) -> complex | None:
     with mp.workdps(30):
         v = sp.N(expr.subs(pt), 30)
     return complex(v) if v.is_number else None
 
 
-def compare(printed, derived, n_points: int = 6, seed: int = 12345, rtol: float = 1e-20,
-            symbolic: bool = True):
+def compare(printed: Expr, derived: Expr, n_points: int = 6, seed: int = 12345, rtol: float = 1e-20,
+            symbolic: bool = True) -> tuple[bool, str]:
     """Compare two SymPy expressions: (equal: bool, evidence: str).
 
     Symbolic first (``simplify(printed - derived) == 0``); otherwise high-precision (30 digits)
@@ -120,7 +123,8 @@ def compare(printed, derived, n_points: int = 6, seed: int = 12345, rtol: float 
             pass
     rng = random.Random(seed)
     syms = (P.free_symbols | D.free_symbols)
-    worst, where = 0.0, None
+    worst = 0.0
+    where: tuple[dict[Expr, Expr], complex, complex] | None = None
     for _ in range(n_points):
         pt = sample_point(syms, rng)
         a, b = _num(P, pt), _num(D, pt)
@@ -132,17 +136,19 @@ def compare(printed, derived, n_points: int = 6, seed: int = 12345, rtol: float 
     if worst <= rtol:
         return True, (f"30-digit values agree at {n_points} random points (largest relative "
                       f"difference {sci(worst)})")
+    assert where is not None  # worst > rtol >= 0, so some point set it
     pt, a, b = where
     return False, (f"at {_at(pt)} the printed form gives {_fmt(a)} and the derived one {_fmt(b)} "
                    f"(relative difference {sci(worst)})")
 
 
-def equal_up_to_factor(printed, derived, n_points: int = 6, seed: int = 7, rtol: float = 1e-20):
+def equal_up_to_factor(printed: Expr, derived: Expr, n_points: int = 6, seed: int = 7,
+                       rtol: float = 1e-20) -> tuple[bool, str]:
     """For relations (residuals = 0): is printed = c * derived with one constant c != 0?"""
     P, D = _with_test_functions(sp.sympify(printed)), _with_test_functions(sp.sympify(derived))
     rng = random.Random(seed)
     syms = (P.free_symbols | D.free_symbols)
-    ratios = []
+    ratios: list[complex] = []
     for _ in range(n_points):
         pt = sample_point(syms, rng)
         a, b = _num(P, pt), _num(D, pt)
@@ -159,7 +165,7 @@ def equal_up_to_factor(printed, derived, n_points: int = 6, seed: int = 7, rtol:
                    f"{sci(spread)}), so the two equations differ")
 
 
-def _fmt(z) -> str:
+def _fmt(z: complex) -> str:
     z = complex(z)
     if abs(z.imag) <= 1e-25 * max(1.0, abs(z.real)):
         return f"{z.real:.10g}"
@@ -167,7 +173,7 @@ def _fmt(z) -> str:
     return f"{z.real:.6g} {sign} {abs(z.imag):.6g}i"
 
 
-def sci(x) -> str:
+def sci(x: SupportsFloat) -> str:
     """A small number for a reader: 3.2e-25 -> $3.2 \\times 10^{-25}$, 0.221 -> 0.221."""
     x = float(x)
     if x == 0:
@@ -178,7 +184,7 @@ def sci(x) -> str:
     return f"${mant} \\times 10^{{{int(ex)}}}$"
 
 
-def _at(pt) -> str:
+def _at(pt: Mapping[Expr, Expr]) -> str:
     from zener_sym.derivation.printing import NAMES  # noqa: PLC0415
 
     return "$" + ", ".join(f"{NAMES.get(s.name, s.name)} = {float(v):.4g}" for s, v in pt.items()) + "$"
@@ -196,7 +202,7 @@ DIMS = {"m1": MASS, "mh": MASS, "m2": MASS, "ms": MASS, "Es": _P, "E1": _P, "E2"
 _DIMLESS = {"nu1": sp.Rational(2, 7), "nu2": sp.Rational(3, 11)}
 
 
-def dimension(expr, extra: dict | None = None):
+def dimension(expr: Expr, extra: Mapping[Expr, Expr] | None = None) -> Expr | None:
     """The dimension of ``expr`` as a monomial in M, L, Ts, or None if its terms disagree.
 
     Symbols not in :data:`DIMS` must be dimensionless (or given in ``extra``). A sum whose terms
@@ -231,7 +237,7 @@ def dimension(expr, extra: dict | None = None):
     return mono
 
 
-def rounds_to(value, printed: str) -> tuple[bool, str]:
+def rounds_to(value: SupportsFloat, printed: str) -> tuple[bool, str]:
     """Does ``value`` round to the printed decimal string (to its number of decimals)?
 
     Truncation is accepted too (the paper sometimes truncates): |value - printed| < 1 unit in

@@ -14,21 +14,25 @@ the CSV with 10 significant digits, which every machine reproduces.
 """
 from __future__ import annotations
 
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..api import history, summary
+from ..api import Summary, history, summary
 from ..models import formulas as fm
 from ..models import get_model
 from ..scene.materials import TABLE1_PLATE, TABLE1_SPHERE
 from ..scene.scene import Scene
 from ..scene.stress_waves import stress_wave_k
+from ..typing import FloatArray
 
-__all__ = ["FigureSpec", "FIGURES", "NUMBERS", "COLUMNS", "HISTORY_LAMS", "TABLE1_RADIUS",
+__all__ = ["Row", "FigureSpec", "FIGURES", "NUMBERS", "COLUMNS", "HISTORY_LAMS", "TABLE1_RADIUS",
            "FIG14_THICKNESS", "FIG14_K", "to_csv", "from_csv"]
 
 COLUMNS = ("panel", "series", "x", "y", "error")
+#: One row of a figure's table (:data:`COLUMNS`): panel, series, x, y and the error (None: none).
+Row = tuple[str, str, float, float, float | None]
 #: The four lambdas of the paper's history figures (Figs. 5, 10, 11).
 HISTORY_LAMS = (0.11, 1.01, 1.51, 1.99)
 #: Sphere radius of the paper's FEM (Appendix): R = 0.9 mm.
@@ -46,30 +50,32 @@ class FigureSpec:
     caption: str
     x: str               # quantity key of the x axis (plot.style.LABELS)
     y: str               # quantity key of the y axis
-    compute: object      # callable(coarse: bool) -> list of row tuples (COLUMNS)
-    panels: tuple = ("",)
+    compute: Callable[[bool], list[Row]]  # compute(coarse) -> the rows (COLUMNS)
+    panels: tuple[str, ...] = ("",)
     error_def: str = "rel"    # "rel", "max" (history, over the exact maximum) or "" (none)
     xlog: bool = False
     ylog: bool = False
-    panel_titles: dict = field(default_factory=dict)
-    labels: dict = field(default_factory=dict)  # series -> legend label in this figure
+    panel_titles: dict[str, str] = field(default_factory=dict)
+    labels: dict[str, str] = field(default_factory=dict)  # series -> legend label in this figure
 
     @property
     def name(self) -> str:
         return f"fig{self.number:02d}"
 
 
-def _lam_grid(coarse, lo=0.0, hi=_LAM_MAX, n=121):
+def _lam_grid(coarse: bool, lo: float = 0.0, hi: float = _LAM_MAX, n: int = 121) -> FloatArray:
     return np.linspace(lo, hi, 13 if coarse else n)
 
 
-def _rows(panel, series, x, y, err=None):
+def _rows(panel: str, series: str, x: FloatArray, y: FloatArray,
+          err: FloatArray | Sequence[float | None] | None = None) -> list[Row]:
     err = [None] * len(x) if err is None else err
     return [(panel, series, float(a), float(b), None if c is None else float(c))
             for a, b, c in zip(x, y, err)]
 
 
-def _vs_lambda(models, field_, lams, panel="", ref=None):
+def _vs_lambda(models: Sequence[str], field_: str, lams: FloatArray, panel: str = "",
+               ref: Summary | None = None) -> list[Row]:
     """Rows of ``field_`` against lambda for each model (inside its validity), errors vs exact."""
     ref = summary(lams) if ref is None else ref
     rows = _rows(panel, "exact", lams, getattr(ref, field_))
@@ -87,9 +93,10 @@ def _vs_lambda(models, field_, lams, panel="", ref=None):
     return rows
 
 
-def _histories(models, field_, lams, coarse, panels=None):
+def _histories(models: Sequence[str], field_: str, lams: Sequence[float], coarse: bool,
+               panels: Sequence[str] | None = None) -> list[Row]:
     """Rows of a history field over [0, 1.1 tau_d] at each lambda (one panel per lambda)."""
-    rows = []
+    rows: list[Row] = []
     n = 41 if coarse else 241
     for i, lam in enumerate(lams):
         panel = panels[i] if panels else f"lambda={lam:g}"
@@ -108,13 +115,13 @@ def _histories(models, field_, lams, coarse, panels=None):
     return rows
 
 
-def _hfield(f):
+def _hfield(f: str) -> str:
     return "impulse" if f == "deflection" else f
 
 
 # --- the figures -------------------------------------------------------------------------
 
-def _fig03(coarse):
+def _fig03(coarse: bool) -> list[Row]:
     # delta_m^{-3/2} over lambda in [0, 100]: the tables to 5, direct integration beyond
     lams = np.concatenate([np.linspace(0.0, 5.0, 6 if coarse else 51),
                            np.geomspace(6.0, 100.0, 3 if coarse else 12)])
@@ -126,42 +133,42 @@ def _fig03(coarse):
     return rows
 
 
-def _fig04(coarse):
+def _fig04(coarse: bool) -> list[Row]:
     return _histories(("ham0", "ham1", "hunter", "reed"), "force", (0.0,), coarse, panels=("",))
 
 
-def _fig05(coarse):
+def _fig05(coarse: bool) -> list[Row]:
     return _histories(("ham0", "ham1", "hunter", "reed", "linear"), "force", HISTORY_LAMS, coarse)
 
 
-def _fig06(coarse):
+def _fig06(coarse: bool) -> list[Row]:
     return _vs_lambda(("ham0", "ham1", "linear", "hunter", "reed"), "F_m", _lam_grid(coarse))
 
 
-def _fig07(coarse):
+def _fig07(coarse: bool) -> list[Row]:
     return _vs_lambda(("ham0", "ham1", "fits", "linear"), "tau_d", _lam_grid(coarse))
 
 
-def _fig08(coarse):
+def _fig08(coarse: bool) -> list[Row]:
     lams = _lam_grid(coarse)
     ref = summary(lams)
     return (_vs_lambda(("ham0", "ham1"), "tau_dc", lams, "compression", ref)
             + _vs_lambda(("ham0", "ham1"), "tau_dr", lams, "recovery", ref))
 
 
-def _fig09(coarse):
+def _fig09(coarse: bool) -> list[Row]:
     return _vs_lambda(("ham0", "ham1", "linear"), "impulse", _lam_grid(coarse))
 
 
-def _fig10(coarse):
+def _fig10(coarse: bool) -> list[Row]:
     return _histories(("ham0", "ham1", "linear"), "velocity", HISTORY_LAMS, coarse)
 
 
-def _fig11(coarse):
+def _fig11(coarse: bool) -> list[Row]:
     return _histories(("ham0", "ham1", "linear"), "deflection", HISTORY_LAMS, coarse)
 
 
-def _fig12(coarse):
+def _fig12(coarse: bool) -> list[Row]:
     # xi = 0 at lambda = 0: the grid starts just above it so every point has a relative error
     return _vs_lambda(("ham0", "ham1", "fits", "linear"), "xi", _lam_grid(coarse, lo=0.02))
 
@@ -171,7 +178,7 @@ def _fig12(coarse):
 FIG13_FIT_MAX = 1.0
 
 
-def _fig13(coarse):
+def _fig13(coarse: bool) -> list[Row]:
     rows = _vs_lambda(("ham0", "ham1", "fits", "linear"), "int_F2", _lam_grid(coarse))
     return [r for r in rows if r[1] != "fits" or r[2] <= FIG13_FIT_MAX]
 
@@ -181,7 +188,7 @@ def _fig13(coarse):
 FIG14_K = {p: stress_wave_k(TABLE1_SPHERE, TABLE1_PLATE, p) for p in ("hunter", "reed")}
 
 
-def _fig14(coarse):
+def _fig14(coarse: bool) -> list[Row]:
     """xi against the impact speed V0 for the paper's Table 1 pair (R = 0.9 mm), two plates.
 
     Besides the Zener loss (exact, Eqs. 70 and 77), Hunter's and Reed's stress-wave loss into a
@@ -189,7 +196,7 @@ def _fig14(coarse):
     so it has no error against the exact Zener loss.
     """
     v0 = np.geomspace(0.1, 20.0, 7 if coarse else 41)
-    rows = []
+    rows: list[Row] = []
     for H in FIG14_THICKNESS:
         panel = f"H={H * 1e3:.3g} mm"
         lam = np.array([Scene(TABLE1_SPHERE, TABLE1_PLATE, TABLE1_RADIUS, H, v).lam for v in v0])
@@ -205,7 +212,7 @@ def _fig14(coarse):
     return rows
 
 
-def _fig15(coarse):
+def _fig15(coarse: bool) -> list[Row]:
     return _vs_lambda(("ham0", "ham1", "linear", "raman"), "e", _lam_grid(coarse))
 
 
@@ -250,7 +257,7 @@ FIGURES = {f.number: f for f in (
 NUMBERS = tuple(FIGURES)
 
 
-def _fmt(v) -> str:
+def _fmt(v: str | float | None) -> str:
     if v is None:
         return ""
     if isinstance(v, str):
@@ -258,19 +265,19 @@ def _fmt(v) -> str:
     return f"{v:.10g}"
 
 
-def to_csv(rows) -> str:
+def to_csv(rows: Iterable[Row]) -> str:
     """The rows as CSV text (header ``COLUMNS``; numbers with 10 significant digits)."""
     lines = [",".join(COLUMNS)]
     lines += [",".join(_fmt(v) for v in r) for r in rows]
     return "\n".join(lines) + "\n"
 
 
-def from_csv(text: str) -> list:
+def from_csv(text: str) -> list[Row]:
     """Rows from :func:`to_csv` text (numbers as floats, empty error as None)."""
     lines = text.strip("\n").split("\n")
     if tuple(lines[0].split(",")) != COLUMNS:
         raise ValueError(f"not a figure CSV: header {lines[0]!r}, expected {','.join(COLUMNS)}")
-    out = []
+    out: list[Row] = []
     for ln in lines[1:]:
         p, s, x, y, e = ln.split(",")
         out.append((p, s, float(x), float(y), float(e) if e else None))

@@ -6,10 +6,18 @@ comparison panel has a lower axis with the error of every curve against the exac
 """
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping, Sequence
+from types import ModuleType
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
 
 from ..plot import style as st
-from .data import FigureSpec
+from ..typing import FloatArray
+from .data import FigureSpec, Row
+
+if TYPE_CHECKING:  # matplotlib is the optional [plot] extra, imported only by pyplot()
+    from matplotlib.figure import Figure
 
 __all__ = ["draw"]
 
@@ -18,18 +26,21 @@ _ERR_LABEL = {"rel": r"$|q-q_{\rm exact}|/q_{\rm exact}$",
               "max": r"$|q-q_{\rm exact}|/\max|q_{\rm exact}|$"}
 
 
-def _series(rows, panel):
-    out = {}
+def _series(rows: Iterable[Row],
+            panel: str) -> dict[str, tuple[FloatArray, FloatArray, FloatArray]]:
+    """The curves of one panel: series -> (x, y, error), a missing error as NaN."""
+    out: dict[str, tuple[list[float], list[float], list[float]]] = {}
     for p, s, x, y, e in rows:
         if p == panel:
             out.setdefault(s, ([], [], []))
             out[s][0].append(x)
             out[s][1].append(y)
             out[s][2].append(np.nan if e is None else e)
-    return {s: tuple(np.array(v) for v in xs) for s, xs in out.items()}
+    return {s: (np.array(xs[0]), np.array(xs[1]), np.array(xs[2])) for s, xs in out.items()}
 
 
-def _style(name, n, labels=None):
+def _style(name: str, n: int, labels: Mapping[str, str] | None = None) -> dict[str, Any]:
+    """Line keywords of series ``name`` (package style), with this figure's legend label."""
     kw = st.style_for(name)
     if labels and name in labels:
         kw["label"] = labels[name]
@@ -38,7 +49,7 @@ def _style(name, n, labels=None):
     return kw
 
 
-def draw(spec: FigureSpec, rows, plt):
+def draw(spec: FigureSpec, rows: Sequence[Row], plt: ModuleType) -> Figure:
     """A matplotlib Figure of ``spec`` from ``rows`` (``plt`` is pyplot under the style's rc)."""
     panels = spec.panels
     n = len(panels)
@@ -49,7 +60,7 @@ def draw(spec: FigureSpec, rows, plt):
     main_h = 2.0 if n == 1 else 1.9
     ratios = ([3, 1.3] if has_err else [1]) * nrow
     height = sum(ratios) / (4.3 if has_err else 1) * main_h + 0.2 * nrow
-    fig = plt.figure(figsize=(width, height), layout="constrained")
+    fig: Figure = plt.figure(figsize=(width, height), layout="constrained")
     gs = fig.add_gridspec(len(ratios), ncol, height_ratios=ratios)
     per = 2 if has_err else 1
     for i, panel in enumerate(panels):

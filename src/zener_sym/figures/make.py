@@ -10,7 +10,9 @@ import os
 import shutil
 import tempfile
 import time
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 
@@ -26,7 +28,7 @@ FORMATS = ("png", "pdf", "svg")
 RTOL, ATOL = 1e-8, 1e-12
 
 
-def parse_only(text) -> tuple:
+def parse_only(text: str | None) -> tuple[int, ...]:
     """Figure numbers from ``"5,15"`` (None: all); ValueError listing the allowed numbers."""
     if text is None:
         return D.NUMBERS
@@ -41,7 +43,7 @@ def parse_only(text) -> tuple:
     return tuple(sorted(set(nums)))
 
 
-def parse_formats(text) -> tuple:
+def parse_formats(text: str) -> tuple[str, ...]:
     """Formats from ``"png,pdf"``; ValueError listing the allowed formats."""
     fmts = [t.strip().lower() for t in str(text).split(",") if t.strip()]
     bad = [f for f in fmts if f not in FORMATS]
@@ -51,7 +53,7 @@ def parse_formats(text) -> tuple:
     return tuple(dict.fromkeys(fmts))
 
 
-def check_out(out) -> Path:
+def check_out(out: str | os.PathLike[str]) -> Path:
     """``out`` as a Path that exists (created) and is writable; ValueError otherwise."""
     out = Path(out)
     try:
@@ -65,8 +67,9 @@ def check_out(out) -> Path:
     return out
 
 
-def build(out, only=None, formats=("png",), csv_only: bool = False, coarse: bool = False,
-          log=print) -> list:
+def build(out: str | os.PathLike[str], only: Iterable[int] | None = None,
+          formats: Sequence[str] = ("png",), csv_only: bool = False, coarse: bool = False,
+          log: Callable[[str], object] = print) -> list[Path]:
     """Write figures ``only`` (numbers; default all) into ``out``; returns the written paths.
 
     Parameters
@@ -92,14 +95,14 @@ def build(out, only=None, formats=("png",), csv_only: bool = False, coarse: bool
         if f not in FORMATS:
             raise ValueError(f"unknown format {f!r}; allowed: {', '.join(FORMATS)}")
     out = check_out(out)
-    plt = None
+    plt: ModuleType | None = None
     if not csv_only:
         from ..plot import style as st
 
         plt = st.pyplot(headless=True)
         from .draw import draw
     tmp = Path(tempfile.mkdtemp(dir=out, prefix=".figures-"))
-    written = []
+    written: list[str] = []
     try:
         for n in nums:
             t0 = time.perf_counter()
@@ -114,7 +117,7 @@ def build(out, only=None, formats=("png",), csv_only: bool = False, coarse: bool
                     plt.close(fig)
             log(f"{spec.name}: {', '.join(names)} ({time.perf_counter() - t0:.1f} s)")
             written += names
-        final = []
+        final: list[Path] = []
         for name in written:
             os.replace(tmp / name, out / name)
             final.append(out / name)
@@ -123,7 +126,7 @@ def build(out, only=None, formats=("png",), csv_only: bool = False, coarse: bool
         shutil.rmtree(tmp, ignore_errors=True)
 
 
-def compare_csv(old: str, new: str, rtol: float = RTOL, atol: float = ATOL) -> list:
+def compare_csv(old: str, new: str, rtol: float = RTOL, atol: float = ATOL) -> list[str]:
     """Differences between two figure CSV texts beyond the tolerance (empty: the same)."""
     a, b = D.from_csv(old), D.from_csv(new)
     if len(a) != len(b):
@@ -135,7 +138,8 @@ def compare_csv(old: str, new: str, rtol: float = RTOL, atol: float = ATOL) -> l
             continue
         for col, va, vb in zip(D.COLUMNS[2:], ra[2:], rb[2:]):
             if (va is None) != (vb is None) or (
-                    va is not None and not np.isclose(vb, va, rtol=rtol, atol=atol)):
+                    va is not None and vb is not None
+                    and not np.isclose(vb, va, rtol=rtol, atol=atol)):
                 diffs.append(f"row {i + 2} ({ra[0] or '-'}, {ra[1]}) {col}: committed {va!r}, "
                              f"now {vb!r}")
         if len(diffs) > 20:
@@ -144,10 +148,11 @@ def compare_csv(old: str, new: str, rtol: float = RTOL, atol: float = ATOL) -> l
     return diffs
 
 
-def stale(folder, only=None) -> dict:
+def stale(folder: str | os.PathLike[str],
+          only: Iterable[int] | None = None) -> dict[str, list[str]]:
     """{figure name: differences} for the CSVs in ``folder`` that are stale or missing."""
     folder = Path(folder)
-    bad = {}
+    bad: dict[str, list[str]] = {}
     for n in (D.NUMBERS if only is None else only):
         spec = D.FIGURES[n]
         p = folder / f"{spec.name}.csv"

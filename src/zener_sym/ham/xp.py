@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import types
+from typing import Any
 
 import mpmath
 import numpy
@@ -32,7 +33,7 @@ class _Mpmath(types.SimpleNamespace):
     """mpmath at the caller's working precision: pi is read when used, so it has that precision."""
 
     @property
-    def pi(self):
+    def pi(self) -> Any:
         return +mpmath.pi
 
 
@@ -43,7 +44,7 @@ MPMATH = _Mpmath(
     re=mpmath.re, im=mpmath.im)
 
 
-def bind(module, xp):
+def bind(module: types.ModuleType, xp: types.SimpleNamespace) -> types.SimpleNamespace:
     """The functions of a generated formula module with ``xp`` given, and its upper-case data.
 
     Parameters
@@ -57,6 +58,15 @@ def bind(module, xp):
     -------
     types.SimpleNamespace
         The same names; each function takes the arguments after ``xp``.
+
+    Examples
+    --------
+    >>> from zener_sym.generated import ham0
+    >>> from zener_sym.ham.xp import NUMPY, bind
+    >>> f = bind(ham0, NUMPY)
+    >>> k, beta, omega0 = f.params(0.0)
+    >>> f.LAM_CRIT == ham0.LAM_CRIT and float(beta) == 0.0
+    True
     """
     names = {n: getattr(module, n) for n in dir(module) if not n.startswith("_")}
     return types.SimpleNamespace(**{

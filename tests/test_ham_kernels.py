@@ -164,3 +164,21 @@ def test_kernels_finite_and_force_consistent(lam, frac):
     np.testing.assert_array_equal(h1.force(tau, lam), np.maximum(d, 0) ** 1.5)
     imp = h0.impulse(tau, lam)
     assert np.all(np.isfinite(imp)) and imp[1] >= imp[0] >= 0
+
+
+def test_runtime_kernels_document_themselves():
+    # the kernels wrap functools.partial objects of the generated formulas, whose __doc__ is
+    # partial's own ("partial(func, *args, ...)"): each kernel names its formula and equation
+    # and describes its own arguments (tau, lam[, dps]), not the formula's (xp, beta, ...)
+    from zener_sym.ham import runtime_mpmath, runtime_numpy
+
+    kernels = {"numpy ham1.delta": (runtime_numpy.ham1.delta, "delta0 + delta1 (42)"),
+               "numpy ham1.delta_from_K": (runtime_numpy.ham1.delta_from_K, "(42)"),
+               "numpy ham1.delta_dot_scaled": (runtime_numpy.ham1.delta_dot_scaled, "exp(beta tau)"),
+               "mpmath delta0": (runtime_mpmath.delta0, "delta0 (35)"),
+               "mpmath ham1.delta": (runtime_mpmath.ham1.delta, "(42)")}
+    for name, (kernel, says) in kernels.items():
+        doc = kernel.__doc__ or ""
+        assert says in doc.splitlines()[0], name
+        assert "partial(" not in doc and "xp : " not in doc, name
+        assert "tau : " in doc and "lam : " in doc and "Returns" in doc, name

@@ -12,7 +12,9 @@ literal the numpy printer used to write, so the numpy results keep their bits; m
 from __future__ import annotations
 
 import functools
+import inspect
 import types
+from collections.abc import Callable
 from typing import Any
 
 import mpmath
@@ -21,7 +23,7 @@ import numpy
 from ..numerics.elementary import half_wave_sin, p3
 from ..numerics.mp import p3_mp
 
-__all__ = ["NUMPY", "MPMATH", "bind"]
+__all__ = ["NUMPY", "MPMATH", "bind", "kernel_doc"]
 
 #: float64 numpy.
 NUMPY = types.SimpleNamespace(
@@ -72,3 +74,37 @@ def bind(module: types.ModuleType, xp: types.SimpleNamespace) -> types.SimpleNam
     return types.SimpleNamespace(**{
         n: functools.partial(v, xp) if callable(v) and not isinstance(v, type) else v
         for n, v in names.items() if callable(v) or n.isupper()})
+
+
+def kernel_doc(formula: Callable[..., Any], params: str, returns: str) -> str:
+    """The docstring of a runtime kernel that wraps a bound formula of :func:`bind`.
+
+    The formula's summary paragraph (what it computes, with the paper's equation), then the
+    kernel's own Parameters and Returns: the formula's describe ``xp`` and the arguments the
+    runtime computes itself (beta, omega0, K), and a ``functools.partial`` carries no docstring
+    of its function.
+
+    Parameters
+    ----------
+    formula : callable
+        A function of :func:`bind`'s namespace (a ``functools.partial``) or a plain function.
+    params : str
+        The kernel's numpydoc Parameters entries, unindented.
+    returns : str
+        Its Returns entries, unindented.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> from zener_sym.generated import ham1
+    >>> from zener_sym.ham.xp import NUMPY, bind, kernel_doc
+    >>> doc = kernel_doc(bind(ham1, NUMPY).delta, "tau : float", "float")
+    >>> doc.splitlines()[0]
+    'First-order HAM compression delta0 + delta1 (42).'
+    """
+    func = getattr(formula, "func", formula)
+    summary = (inspect.getdoc(func) or "").split("\n\n")[0]
+    return f"{summary}\n\nParameters\n----------\n{params}\n\nReturns\n-------\n{returns}\n"

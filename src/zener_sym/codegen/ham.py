@@ -107,9 +107,9 @@ _ARG_DOCS: dict[str, tuple[str, str]] = {
     "lam": (_FLOATS, "The damping parameter lambda of Eq. (10), 0 <= lambda < ``LAM_CRIT`` "
             "(Eq. 81)."),
     "tau": (_FLOATS, "Dimensionless time tau of Eq. (10), >= 0."),
-    "beta": (_FLOATS, "beta = k lambda / 2 (32), from ``params`` of ``zener_sym.generated.ham0``."),
-    "omega0": (_FLOATS, "omega0 = sqrt(k - beta^2) > 0 (33), from ``params`` of "
-               "``zener_sym.generated.ham0``."),
+    "beta": (_FLOATS, "The decay rate beta = k lambda / 2 (32), from ``params`` of ``zener_sym.generated.ham0``."),
+    "omega0": (_FLOATS, "The frequency omega0 = sqrt(k - beta^2) > 0 (33), from ``params`` "
+               "of ``zener_sym.generated.ham0``."),
     "Kcc": (_FLOATS, "K_cc(a, theta) = int_0^theta exp(-a t) cos^2 t sqrt(sin t) dt (36), at "
             "a = ``a_first(xp, beta, omega0)`` and theta = min(omega0 tau, pi)."),
     "Ksc": (_FLOATS, "K_sc, as ``Kcc`` with sin t cos t for cos^2 t."),
@@ -230,12 +230,14 @@ def _zeroth_docs() -> dict[str, _Doc]:
     f = _FLOATS
     return {
         "params": _Doc(
-            "k (25), beta (32) and omega0 (33) of the zeroth-order operator.",
+            "The coefficients k (25), beta (32) and omega0 (33) of the zeroth-order operator.",
             "The auxiliary linear operator (12) is delta'' + k lambda delta' + k delta, with roots "
             "-beta +- i omega0; k = (lambda + delta_m(0)^(-3/2))^(-1/3) with delta_m(0) = "
             "(5/4)^(2/5), the elastic maximum compression (23).",
-            [("k", f, "k (25), > 0."), ("beta", f, "beta = k lambda / 2 (32)."),
-             ("omega0", f, "omega0 = sqrt(4 k - k^2 lambda^2) / 2 (33), real below LAM_CRIT.")],
+            [("k", f, "The coefficient k (25) of the auxiliary operator, > 0."),
+             ("beta", f, "The decay rate beta = k lambda / 2 (32)."),
+             ("omega0", f, "The frequency omega0 = sqrt(4 k - k^2 lambda^2) / 2 (33), real "
+              "below LAM_CRIT.")],
             [_NP, ">>> k, beta, omega0 = params(NUMPY, 0.0)",
              ">>> bool(abs(k - 1.25 ** 0.2) < 1e-15), float(beta)  # elastic: k = delta_m(0)^(1/2)",
              "(True, 0.0)", ">>> k, beta, omega0 = params(NUMPY, 1.0)",
@@ -246,7 +248,7 @@ def _zeroth_docs() -> dict[str, _Doc]:
             "delta0 = exp(-beta tau) sin(omega0 tau) / omega0 solves the auxiliary linear "
             "equation (28) with delta0(0) = 0, delta0'(0) = 1 (29); it is negative past "
             "tau = pi / omega0, the end of the zeroth-order contact (54).",
-            [("delta0", f, "delta0 at ``tau``.")],
+            [("delta0", f, "The compression delta0 at ``tau``.")],
             [_NP, ">>> k, beta, omega0 = params(NUMPY, 0.0)",
              ">>> tau = NUMPY.pi / (2 * omega0)  # the maximum when lambda = 0",
              ">>> bool(abs(delta0(NUMPY, tau, 0.0, beta, omega0) - 1 / omega0) < 1e-15)",
@@ -254,15 +256,15 @@ def _zeroth_docs() -> dict[str, _Doc]:
         "delta0_dot": _Doc(
             "Zeroth-order relative velocity delta0' (56).",
             "d/dtau of delta0 (35), continued analytically like it.",
-            [("delta0_dot", f, "delta0' at ``tau``.")],
+            [("delta0_dot", f, "The velocity delta0' at ``tau``.")],
             [_NP, ">>> k, beta, omega0 = params(NUMPY, 1.0)",
              ">>> round(float(delta0_dot(NUMPY, 0.0, 1.0, beta, omega0)), 15)  # (29): delta0'(0) = 1",
              "1.0"]),
         "delta_contact": _Doc(
-            "delta0 (35) on the zeroth-order contact, 0 after it (54).",
+            "The compression delta0 (35) on the zeroth-order contact, 0 after it (54).",
             "Its sine is printed as the first half wave ``xp.half_wave_sin`` (sin on [0, pi], 0 "
             "beyond), so the compression is 0 from omega0 tau = pi on; the NUMPY namespace only.",
-            [("delta", f, "delta0 at ``tau`` on the contact, 0 after it.")],
+            [("delta", f, "The compression delta0 at ``tau`` on the contact, 0 after it.")],
             [">>> import numpy as np", _NP, ">>> k, beta, omega0 = params(NUMPY, 1.0)",
              ">>> tau = np.array([0.3, 1.5]) * np.pi / omega0  # on the contact, after it",
              ">>> d = delta_contact(NUMPY, tau, 1.0, beta, omega0)",
@@ -330,7 +332,7 @@ def _first_docs() -> dict[str, _Doc]:
             "The variation-of-constants solution of the first-order deformation equation (30) "
             "with zero initial data (31): an elementary part and the square-root part through "
             "K_cc, K_sc, K_ss (36).",
-            [("delta1", f, "delta1 at ``tau``.")],
+            [("delta1", f, "The correction delta1 at ``tau``.")],
             [_NP, _H0, ">>> k, beta, omega0 = params(NUMPY, 0.5)",
              f">>> float(delta1(NUMPY, 0.0, 0.5, beta, omega0, {_K0}))  # (31): delta1(0) = 0",
              "0.0"]),
@@ -338,7 +340,7 @@ def _first_docs() -> dict[str, _Doc]:
             "First-order HAM compression delta0 + delta1 (42).",
             "Printed whole, not as the sum of two calls, so that it keeps its bits; on the "
             "zeroth-order contact (K frozen at theta = pi beyond it: the continuation).",
-            [("delta", f, "delta0 + delta1 at ``tau``.")],
+            [("delta", f, "The compression delta0 + delta1 at ``tau``.")],
             [_NP, _H0, *_K_OF,
              ">>> d = delta(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
              ">>> d1 = delta1(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
@@ -352,18 +354,19 @@ def _first_docs() -> dict[str, _Doc]:
              f">>> v = delta_dot(NUMPY, 0.0, 0.5, beta, omega0, {_K0})",
              ">>> bool(abs(v - 1.0) < 1e-15)  # (29), (31): delta'(0) = 1 + 0", "True"]),
         "delta_scaled": _Doc(
-            "exp(beta tau) (delta0 + delta1): the sign of delta (42) without underflow.",
+            "The product exp(beta tau) (delta0 + delta1): the sign of delta (42) without underflow.",
             "The exponentials merged into the terms: root finding on the end of contact uses it.",
-            [("delta_scaled", f, "exp(beta tau) delta at ``tau``.")],
+            [("delta_scaled", f, "The product exp(beta tau) delta at ``tau``.")],
             [_NP, ">>> from math import exp", _H0, *_K_OF,
              ">>> d = delta(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
              ">>> ds = delta_scaled(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
              ">>> bool(abs(ds - exp(beta * tau) * d) < 1e-15)", "True"]),
         "delta_dot_scaled": _Doc(
-            "exp(beta tau) d/dtau (delta0 + delta1): the sign of delta' without underflow.",
+            "The product exp(beta tau) d/dtau (delta0 + delta1): the sign of delta' without "
+            "underflow.",
             "The exponentials merged into the terms: root finding on the end of compression uses "
             "it.",
-            [("delta_dot_scaled", f, "exp(beta tau) delta' at ``tau``.")],
+            [("delta_dot_scaled", f, "The product exp(beta tau) delta' at ``tau``.")],
             [_NP, ">>> from math import exp", _H0, *_K_OF,
              ">>> v = delta_dot(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
              ">>> vs = delta_dot_scaled(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",

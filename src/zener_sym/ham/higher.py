@@ -762,8 +762,14 @@ def squared_residual(lam: RealLike, order: int, c0: float, formulation: str = "p
 
     Parameters
     ----------
-    lam, order, c0, formulation
-        As in :func:`solve` (c0 given).
+    lam : float
+        lambda, as in :func:`solve`.
+    order : int
+        The HAM order, as in :func:`solve`.
+    c0 : float
+        Liao's convergence-control parameter, finite and non-zero.
+    formulation : {'paper', 'strained'}
+        The homotopy (module docstring).
 
     Returns
     -------
@@ -787,8 +793,12 @@ def optimal_c0(lam: RealLike, order: int, formulation: str = "paper") -> float:
 
     Parameters
     ----------
-    lam, order, formulation
-        As in :func:`solve`.
+    lam : float
+        lambda, as in :func:`solve`.
+    order : int
+        The HAM order, as in :func:`solve`.
+    formulation : {'paper', 'strained'}
+        The homotopy (module docstring).
 
     Returns
     -------

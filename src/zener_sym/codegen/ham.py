@@ -107,7 +107,8 @@ _ARG_DOCS: dict[str, tuple[str, str]] = {
     "lam": (_FLOATS, "The damping parameter lambda of Eq. (10), 0 <= lambda < ``LAM_CRIT`` "
             "(Eq. 81)."),
     "tau": (_FLOATS, "Dimensionless time tau of Eq. (10), >= 0."),
-    "beta": (_FLOATS, "The decay rate beta = k lambda / 2 (32), from ``params`` of ``zener_sym.generated.ham0``."),
+    "beta": (_FLOATS, "The decay rate beta = k lambda / 2 (32), from ``params`` of "
+             "``zener_sym.generated.ham0``."),
     "omega0": (_FLOATS, "The frequency omega0 = sqrt(k - beta^2) > 0 (33), from ``params`` "
                "of ``zener_sym.generated.ham0``."),
     "Kcc": (_FLOATS, "K_cc(a, theta) = int_0^theta exp(-a t) cos^2 t sqrt(sin t) dt (36), at "
@@ -133,15 +134,16 @@ class _Doc(NamedTuple):
 
 
 def _fill(text: str, indent: str) -> list[str]:
-    return textwrap.wrap(text, 96 - len(indent), initial_indent=indent, subsequent_indent=indent,
+    """``text`` wrapped at 96 columns (``indent`` included), every line indented."""
+    return textwrap.wrap(text, 96, initial_indent=indent, subsequent_indent=indent,
                          break_on_hyphens=False)
 
 
-def _docstring(name: str, args: Sequence[str], doc: _Doc) -> str:
+def _docstring(args: Sequence[str], doc: _Doc) -> str:
     """The numpydoc docstring (indented for a function body) of ``name(xp, *args)``."""
     i, j = "    ", "        "
-    lines = _fill(doc.summary, "")
-    lines = [lines[0]] + [i + x for x in lines[1:]]
+    lines = _fill(doc.summary, i)  # the first line follows the opening quotes
+    lines = [lines[0].lstrip()] + lines[1:]
     if doc.extended:
         lines += [""] + _fill(doc.extended, i)
     lines += ["", i + "Parameters", i + "----------"]
@@ -171,7 +173,7 @@ def _function(printer: Any, name: str, args: Sequence[str], doc: _Doc,
         have.add(out)
     ret = returns or ", ".join(n for n, _ in outputs)
     return (f"\n\ndef {name}({', '.join(('xp',) + tuple(map(str, args)))}):\n"
-            f"    {_docstring(name, args, doc)}\n"
+            f"    {_docstring(args, doc)}\n"
             f"{_block(printer, outputs, prefix=prefix)}\n    return {ret}\n")
 
 

@@ -154,6 +154,15 @@ def piece_nodes(kind: str, a: float, b: float, n: int) -> FloatArray:
     -------
     ndarray
         The n lambda values, inside (a, b).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from zener_sym.ham.table_build import piece_nodes
+    >>> lam = piece_nodes("sqrt", 2.0, 2.25, 5)  # Chebyshev points in s = sqrt(lambda - 2)
+    >>> s = np.sqrt(lam - 2.0)
+    >>> bool(np.allclose(np.sort(s), 0.25 + 0.25 * np.cos((2 * np.arange(5)[::-1] + 1) * np.pi / 10)))
+    True
     """
     ga, gb = variable_ends(kind, a, b)
     g = ga + (gb - ga) * (cheb_nodes(n) + 1.0) / 2.0

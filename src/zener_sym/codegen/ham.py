@@ -364,7 +364,7 @@ def _first_docs() -> dict[str, _Doc]:
              ">>> ds = delta_scaled(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
              ">>> bool(abs(ds - exp(beta * tau) * d) < 1e-15)", "True"]),
         "delta_dot_scaled": _Doc(
-            "The product exp(beta tau) d/dtau (delta0 + delta1): the sign of delta' without "
+            "The product exp(beta tau) d/dtau (delta0 + delta1): the sign of delta' (42) without "
             "underflow.",
             "The exponentials merged into the terms: root finding on the end of compression uses "
             "it.",

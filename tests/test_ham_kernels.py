@@ -182,3 +182,20 @@ def test_runtime_kernels_document_themselves():
         assert says in doc.splitlines()[0], name
         assert "partial(" not in doc and "xp : " not in doc, name
         assert "tau : " in doc and "lam : " in doc and "Returns" in doc, name
+
+
+def test_delta_contact_takes_scalars():
+    # a scalar tau and lambda used to raise TypeError from inside numpy (half_wave_sin's in-place
+    # steps on a numpy scalar); a scalar gives the value of the one-element array, delta0 (35)
+    # on the contact, 0 after it
+    import numpy as np
+
+    from zener_sym.ham.runtime_numpy import ham0
+
+    k, beta, omega0 = ham0.params(1.0)
+    for tau in (0.5, 0.99 * np.pi / omega0, 1.5 * np.pi / omega0):
+        d = ham0.delta_contact(tau, 1.0)
+        assert np.shape(d) == ()
+        assert float(d) == float(ham0.delta_contact([tau], 1.0)[0])
+        expect = max(float(ham0.delta0(tau, 1.0)), 0.0) if omega0 * tau <= np.pi else 0.0
+        assert abs(float(d) - expect) <= 1e-15

@@ -72,8 +72,13 @@ def test_generated_formulas_are_backend_neutral():
         text = (codegen.generated_dir() / name).read_text()
         tree = ast.parse(text)
         assert not [n for n in ast.walk(tree) if isinstance(n, (ast.Import, ast.ImportFrom))], name
-        body = text.split('"""', 2)[2]
-        assert "numpy" not in body and "mpmath" not in body, name
+        # the code and comments, without the docstrings (whose Examples may use numpy arrays)
+        doc_lines = {i for n in ast.walk(tree) if isinstance(n, (ast.Module, ast.FunctionDef))
+                     and ast.get_docstring(n) is not None
+                     for i in range(n.body[0].lineno, n.body[0].end_lineno + 1)}
+        code = "\n".join(line for i, line in enumerate(text.splitlines(), 1) if i not in doc_lines)
+        assert "def " in code and "xp." in code, name  # the stripping kept the formulas
+        assert "numpy" not in code and "mpmath" not in code, name
         for fn in (n for n in tree.body if isinstance(n, ast.FunctionDef)):
             assert fn.args.args[0].arg == "xp", (name, fn.name)
     text0 = (codegen.generated_dir() / "ham0.py").read_text()
@@ -129,3 +134,57 @@ def test_generated_kernels_hold_formulas_only():
     # the check can fail: a hand-written check, as the templates used to hold
     assert _control_flow("def f(x):\n    if x < 0:\n        raise ValueError\n    return x\n") == [
         "If", "Raise"]
+
+
+def _kernel_functions():
+    import importlib
+    import inspect
+
+    for name in ("ham0", "ham1"):
+        module = importlib.import_module(f"zener_sym.generated.{name}")
+        for fname, fn in inspect.getmembers(module, inspect.isfunction):
+            if not fname.startswith("_") and fn.__module__ == module.__name__:
+                yield module, fname, fn
+
+
+def test_generated_kernels_have_numpydoc_docstrings():
+    # the API reference renders them: every argument described, Returns, an equation number of
+    # the paper, and an Examples section
+    import inspect
+    import re
+
+    seen = 0
+    for module, fname, fn in _kernel_functions():
+        doc = inspect.getdoc(fn) or ""
+        where = f"{module.__name__}.{fname}"
+        for section in ("Parameters\n----------", "Returns\n-------", "Examples\n--------"):
+            assert section in doc, (where, section)
+        params = doc.split("Parameters\n----------")[1].split("Returns\n-------")[0]
+        described = re.findall(r"^(\w+) : ", params, flags=re.M)
+        assert described == list(inspect.signature(fn).parameters), where
+        # the paper's equation in the summary or its paragraph (the Parameters all cite (10))
+        head = doc.split("Parameters\n----------")[0]
+        assert re.search(r"\(\d\d\)|Eq\. \(?\d\d", head), (where, "no equation number")
+        assert ">>> " in doc.split("Examples\n--------")[1], where
+        seen += 1
+    assert seen >= 15  # ham0: 9 functions, ham1: 6
+
+
+def test_generated_kernel_examples_run():
+    # the Examples of the generated kernels are doctests; each function's run and pass
+    import doctest
+    import importlib
+
+    for name in ("ham0", "ham1"):
+        module = importlib.import_module(f"zener_sym.generated.{name}")
+        finder = doctest.DocTestFinder()
+        runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+        tested = set()
+        for test in finder.find(module):
+            if test.examples:
+                runner.run(test)
+                tested.add(test.name.rsplit(".", 1)[1])
+        result = runner.summarize(verbose=False)
+        assert result.failed == 0, name
+        public = {f for m, f, _ in _kernel_functions() if m is module}
+        assert public <= tested, (name, public - tested)

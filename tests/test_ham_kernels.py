@@ -164,3 +164,38 @@ def test_kernels_finite_and_force_consistent(lam, frac):
     np.testing.assert_array_equal(h1.force(tau, lam), np.maximum(d, 0) ** 1.5)
     imp = h0.impulse(tau, lam)
     assert np.all(np.isfinite(imp)) and imp[1] >= imp[0] >= 0
+
+
+def test_runtime_kernels_document_themselves():
+    # the kernels wrap functools.partial objects of the generated formulas, whose __doc__ is
+    # partial's own ("partial(func, *args, ...)"): each kernel names its formula and equation
+    # and describes its own arguments (tau, lam[, dps]), not the formula's (xp, beta, ...)
+    from zener_sym.ham import runtime_mpmath, runtime_numpy
+
+    kernels = {"numpy ham1.delta": (runtime_numpy.ham1.delta, "delta0 + delta1 (42)"),
+               "numpy ham1.delta_from_K": (runtime_numpy.ham1.delta_from_K, "(42)"),
+               "numpy ham1.delta_dot_scaled": (runtime_numpy.ham1.delta_dot_scaled, "exp(beta tau)"),
+               "mpmath delta0": (runtime_mpmath.delta0, "delta0 (35)"),
+               "mpmath ham1.delta": (runtime_mpmath.ham1.delta, "(42)")}
+    for name, (kernel, says) in kernels.items():
+        doc = kernel.__doc__ or ""
+        assert says in doc.splitlines()[0], name
+        assert "partial(" not in doc and "xp : " not in doc, name
+        assert "tau : " in doc and "lam : " in doc and "Returns" in doc, name
+
+
+def test_delta_contact_takes_scalars():
+    # a scalar tau and lambda used to raise TypeError from inside numpy (half_wave_sin's in-place
+    # steps on a numpy scalar); a scalar gives the value of the one-element array, delta0 (35)
+    # on the contact, 0 after it
+    import numpy as np
+
+    from zener_sym.ham.runtime_numpy import ham0
+
+    k, beta, omega0 = ham0.params(1.0)
+    for tau in (0.5, 0.99 * np.pi / omega0, 1.5 * np.pi / omega0):
+        d = ham0.delta_contact(tau, 1.0)
+        assert np.shape(d) == ()
+        assert float(d) == float(ham0.delta_contact([tau], 1.0)[0])
+        expect = max(float(ham0.delta0(tau, 1.0)), 0.0) if omega0 * tau <= np.pi else 0.0
+        assert abs(float(d) - expect) <= 1e-15

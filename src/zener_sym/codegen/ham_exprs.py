@@ -35,6 +35,7 @@ here against a cheap independent local route before use (the registry's own chec
 from __future__ import annotations
 
 import functools
+from typing import Any
 
 import sympy as sp
 
@@ -50,33 +51,33 @@ Kcc, Ksc, Kss, Ks = sp.symbols("Kcc Ksc Kss Ks", real=True)
 a_, theta_, m_ = sp.symbols("a theta m", real=True)
 
 
-class P3(sp.Function):
+class P3(sp.Function):  # type: ignore[misc]  # sympy is untyped: its classes are Any
     """P3(x) = (sin x - x cos x) / x^3, analytic, P3(0) = 1/3 (printed as a stable helper)."""
 
     nargs = 1
 
 
-class Atan2(sp.Function):
+class Atan2(sp.Function):  # type: ignore[misc]  # sympy is untyped: its classes are Any
     """atan2(y, x) kept unevaluated through cse (SymPy turns atan2 of positive symbols into
     atan(y/x), which divides by zero at beta = 0); printed as arctan2 / mpmath.atan2."""
 
     nargs = 2
 
 
-SYMBOLS = {"tau": tau, "lam": lam, "beta": beta, "omega0": omega0, "k": k, "S": S, "Kcc": Kcc,
+SYMBOLS: dict[str, Any] = {"tau": tau, "lam": lam, "beta": beta, "omega0": omega0, "k": k, "S": S, "Kcc": Kcc,
            "Ksc": Ksc, "Kss": Kss, "Ks": Ks, "a": a_, "theta": theta_, "m": m_}
 
 
-def _zero(expr) -> bool:
-    return sp.simplify(expr) == 0
+def _zero(expr: Any) -> bool:
+    return bool(sp.simplify(expr) == 0)
 
 
-def _check(name, ok):
+def _check(name: str, ok: bool) -> None:
     if not ok:
         raise AssertionError(f"codegen derivation check failed: {name}")
 
 
-def _from_registry():
+def _from_registry() -> dict[str, Any]:
     """The derivation's named results, in this module's symbols (the registry names lambda
     ``lambda``, a Python keyword, and omega0 ``omega_0``)."""
     from zener_sym.derivation.registry import derive
@@ -94,14 +95,28 @@ REGISTRY_SOURCES = ("zener_sym.derivation.registry",)
 
 
 @functools.lru_cache(maxsize=None)
-def ham_expressions() -> dict:
+def ham_expressions() -> dict[str, Any]:
     """Name -> SymPy expression for every quantity the HAM kernels print (see module docstring).
 
     k(lambda), lam_crit, delta0 and the forcing (36) come from the derivation's registry; each is
     checked here against an independent local route before use.
+
+    Returns
+    -------
+    dict of str to sympy.Expr
+        ``k_of_lam`` (25), ``beta_of_lam``, ``omega0_of_lam`` (32-33), ``lam_crit`` and
+        ``lam_crit_eq`` (81), ``delta0``, ``delta0_dot`` (35, 56), the zeroth-order closed forms
+        (``tau_d0``, ``tau_dc0``, ``tau_dr0``, ``eta0``, ``e0``, ``delta_m0``, ``int_F2_0``,
+        ``impulse0``, ``a_impulse0``), the forcing (36), ``delta1``, ``delta1_dot`` (37-42) and
+        the 2F1 closed forms ``J_theta``, ``J_pi``; cached.
+
+    Raises
+    ------
+    AssertionError
+        A registry result disagrees with its local check (a broken derivation).
     """
     reg = _from_registry()
-    e = {}
+    e: dict[str, Any] = {}
     th = omega0 * tau
     # --- (23)-(25): k(lambda); local route: delta_m(0) from the energy integral (22) ----------------
     dm0 = sp.Rational(5, 4) ** sp.Rational(2, 5)
@@ -176,7 +191,9 @@ def ham_expressions() -> dict:
     # --- (37)-(42): elementary part of delta1, proposed in a stable form and verified ---------------
     # It is the convolution (1/omega0) int_0^tau exp(-beta(tau-s)) sin(omega0(tau-s)) f_elem(s) ds, i.e.
     # the solution of L[delta] = f_elem with zero initial data (30)-(31): check exactly that.
-    p3_def = lambda ex: ex.replace(P3, lambda y: (sp.sin(y) - y * sp.cos(y)) / y**3)  # noqa: E731
+    def p3_def(ex: Any) -> Any:
+        return ex.replace(P3, lambda y: (sp.sin(y) - y * sp.cos(y)) / y**3)
+
     d1e_stable = sp.exp(-beta * tau) * ((omega0**2 - beta**2) / 2 * tau**3 * P3(th)
                                         + beta * tau * sp.sin(th) / omega0)
     d1e = p3_def(d1e_stable)

@@ -50,12 +50,16 @@ from __future__ import annotations
 
 import math
 import numbers
+from collections.abc import Callable, Sequence
+from typing import Any, cast
 
 import numpy as np
+import numpy.typing as npt
 import scipy.optimize
 
 from ..numerics.chebyshev import cheb_nodes
 from ..numerics.maps import smoothstep, smoothstep_inverse, smoothstep_slope
+from ..typing import FloatArray, RealArrayLike, RealLike
 
 __all__ = ["FORMULATIONS", "PAPER_MAX_ORDER", "STRAINED_MAX_ORDER", "N_NODES", "TAIL_TOL",
            "C0_RANGE", "HamSolution", "solve", "optimal_c0", "squared_residual", "check_order",
@@ -81,7 +85,7 @@ C0_RANGE = (-2.0, -0.05)
 
 
 # ------------------------------------------------------------------------- fixed matrices
-def _first_kind(n):
+def _first_kind(n: int) -> tuple[FloatArray, FloatArray]:
     x = cheb_nodes(n)[::-1].copy()
     return x, np.linalg.inv(_C.chebvander(x, n - 1))
 
@@ -90,9 +94,12 @@ _X, _FIT = _first_kind(N_NODES)
 _T = 0.5 * (1.0 + _X)
 _TH = np.pi * np.sin(0.5 * np.pi * _T) ** 2
 _DTH = 0.5 * np.pi ** 2 * np.sin(np.pi * _T)  # d theta / dt
-def _mm(A, B):
+
+
+def _mm(A: npt.NDArray[np.floating[Any]], B: npt.NDArray[np.floating[Any]]) -> FloatArray:
     """A @ B without BLAS (thread-count independent digits, see ``_mv``)."""
-    return np.einsum("ij,jk->ik", A, B)
+    out: FloatArray = np.einsum("ij,jk->ik", A, B)
+    return out
 
 
 _INTC = _mm(_C.chebint(np.eye(N_NODES), lbnd=-1.0, axis=0), _FIT)  # values -> antiderivative
@@ -111,21 +118,22 @@ _QCUM = _mm(_C.chebvander(_QX, _NQ), _QINTC) * 0.5
 _QEND = _mm(_C.chebvander(np.array([1.0]), _NQ), _QINTC)[0] * 0.5
 
 
-def _mv(A, v):
+def _mv(A: FloatArray, v: FloatArray) -> FloatArray:
     """A @ v without BLAS: the same digits whatever the thread count (BLAS may split the sum
     across threads), and no thread start-up for these small products."""
-    return np.einsum("...j,j->...", A, v)
+    out: FloatArray = np.einsum("...j,j->...", A, v)
+    return out
 
 
-def _expm_stack(A, h):
+def _expm_stack(A: FloatArray, h: RealArrayLike) -> FloatArray:
     """exp(A h) for each h (a 1-D array), by Taylor series and squaring, all in einsum: scipy's
     expm goes through threaded BLAS, whose spinning threads made the study ten times slower on a
     loaded machine. Scaled so that |A h / 2^s|_1 <= 1/2, where 20 Taylor terms are exact to
     rounding (2^-20 / 20! ~ 4e-25)."""
-    h = np.asarray(h, dtype=float)
-    norm = np.abs(A).sum(axis=0).max() * np.abs(h)
+    ha = np.asarray(h, dtype=float)
+    norm = np.abs(A).sum(axis=0).max() * np.abs(ha)
     s = np.maximum(np.ceil(np.log2(np.maximum(norm, 1e-300) / 0.5)), 0).astype(int)
-    X = A[None] * (h / 2.0 ** s)[:, None, None]
+    X = A[None] * (ha / 2.0 ** s)[:, None, None]
     n = A.shape[0]
     E = np.broadcast_to(np.eye(n), X.shape).copy()
     term = E.copy()
@@ -135,21 +143,51 @@ def _expm_stack(A, h):
     for k in range(int(s.max()) if s.size else 0):
         sq = np.einsum("nij,njk->nik", E, E)
         E = np.where((k < s)[:, None, None], sq, E)
-    return E
+    out: FloatArray = E
+    return out
 
 
-def _theta_to_x(theta):
+def _theta_to_x(theta: RealArrayLike) -> FloatArray:
     """Chebyshev variable x in [-1, 1] of theta in [0, pi]."""
     f = np.clip(np.asarray(theta, dtype=float) / np.pi, 0.0, 1.0)
-    return 2.0 * (2.0 / np.pi) * np.arcsin(np.sqrt(f)) - 1.0
+    out: FloatArray = 2.0 * (2.0 / np.pi) * np.arcsin(np.sqrt(f)) - 1.0
+    return out
 
 
 # ---------------------------------------------------------------------------- validation
-def check_order(order, formulation="paper") -> int:
-    """``order`` as an int, or ValueError naming the allowed orders of ``formulation``."""
+def check_order(order: object, formulation: object = "paper") -> int:
+    """``order`` as an int, or ValueError naming the allowed orders of ``formulation``.
+
+    Parameters
+    ----------
+    order : int
+        The HAM order asked for.
+    formulation : {'paper', 'strained'}
+        The homotopy (module docstring).
+
+    Returns
+    -------
+    int
+        ``order``, 1 <= order <= PAPER_MAX_ORDER (paper) or STRAINED_MAX_ORDER (strained).
+
+    Raises
+    ------
+    ValueError
+        Not a positive integer (a bool is refused), or beyond the formulation's orders.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.higher import check_order
+    >>> check_order(5, "strained")
+    5
+    >>> check_order(3, "paper")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: order 3 does not exist in the paper's formulation: ...
+    """
     formulation = check_formulation(formulation)
     top = PAPER_MAX_ORDER if formulation == "paper" else STRAINED_MAX_ORDER
-    if isinstance(order, bool) or not isinstance(order, numbers.Integral) or order < 1:
+    if isinstance(order, bool) or not isinstance(order, numbers.Integral) or int(order) < 1:
         raise ValueError(f"order must be a positive integer, got {order!r}; allowed for the "
                          f"{formulation!r} formulation: 1 to {top}")
     order = int(order)
@@ -166,31 +204,75 @@ def check_order(order, formulation="paper") -> int:
     return order
 
 
-def check_c0(c0) -> float:
-    """``c0`` as a float, or ValueError: c0 must be finite and non-zero."""
-    if isinstance(c0, bool) or not isinstance(c0, numbers.Real) or not math.isfinite(c0) or c0 == 0:
+def check_c0(c0: object) -> float:
+    """``c0`` as a float, or ValueError: c0 must be finite and non-zero.
+
+    Parameters
+    ----------
+    c0 : float
+        Liao's convergence-control parameter (the paper's homotopy (14) is c0 = -1).
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    ValueError
+        Not a real number (a bool is refused), not finite, or zero.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.higher import check_c0
+    >>> check_c0(-1)
+    -1.0
+    """
+    if (isinstance(c0, bool) or not isinstance(c0, numbers.Real) or not math.isfinite(float(c0))
+            or c0 == 0):
         raise ValueError(f"c0 must be a finite, non-zero real number (the paper's homotopy is "
                          f"c0 = -1; None picks the optimum), got {c0!r}")
     return float(c0)
 
 
-def check_formulation(formulation) -> str:
-    if formulation not in FORMULATIONS:
+def check_formulation(formulation: object) -> str:
+    """``formulation`` if it is one of ``FORMULATIONS``, else ValueError.
+
+    Parameters
+    ----------
+    formulation : {'paper', 'strained'}
+        The homotopy (module docstring).
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    ValueError
+        Any other value, with the allowed ones.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.higher import check_formulation
+    >>> check_formulation("strained")
+    'strained'
+    """
+    if not isinstance(formulation, str) or formulation not in FORMULATIONS:
         raise ValueError(f"unknown formulation {formulation!r}; allowed: "
                          f"{', '.join(map(repr, FORMULATIONS))}")
     return formulation
 
 
 # ------------------------------------------------------------------ the linear operator
-def _lam_params(lam):
+def _lam_params(lam: RealLike) -> tuple[float, float, float]:
     from .runtime_numpy import ham1 as ham1_numpy
 
-    lam = float(lam)
-    if not (math.isfinite(lam) and 0.0 <= lam < ham1_numpy.LAM_CRIT):
-        raise ValueError(f"lambda = {lam!r} is outside the HAM formulations' range: allowed "
+    la = float(lam)
+    if not (math.isfinite(la) and 0.0 <= la < ham1_numpy.LAM_CRIT):
+        raise ValueError(f"lambda = {la!r} is outside the HAM formulations' range: allowed "
                          f"0 <= lambda < lam_crit = {ham1_numpy.LAM_CRIT_DIGITS} (omega0 of the "
                          f"auxiliary operator (12) is real only below it, Eq. 81)")
-    k, beta, omega0 = (float(v) for v in ham1_numpy.params(lam))
+    k, beta, omega0 = (float(v) for v in ham1_numpy.params(la))
     return k, beta, omega0
 
 
@@ -198,7 +280,7 @@ class _Op:
     """Inverse of L = D^2 + 2 b D + (1 + b^2) in theta with zero initial values, at the nodes:
     y = int_0^theta exp(-b (theta - psi)) sin(theta - psi) R(psi) dpsi (variation of constants)."""
 
-    def __init__(self, b):
+    def __init__(self, b: float) -> None:
         self.b = b
         self.e_minus = np.exp(-b * _TH)
         self.s, self.c = np.sin(_TH), np.cos(_TH)
@@ -206,7 +288,7 @@ class _Op:
         self.wc, self.ws = w * self.c, w * self.s
         self.e_pi = math.exp(-b * math.pi)
 
-    def solve(self, R):
+    def solve(self, R: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, float, float]:
         """(y, y', y'') at the nodes and (y, y') at theta = pi, for R at the nodes."""
         b = self.b
         A, B = _mv(_CUM, self.wc * R), _mv(_CUM, self.ws * R)
@@ -214,14 +296,14 @@ class _Op:
         y1 = self.e_minus * ((self.c - b * self.s) * A + (self.s + b * self.c) * B)
         y2 = R - 2.0 * b * y1 - (1.0 + b * b) * y
         Ap, Bp = _mv(_CUM_END, self.wc * R), _mv(_CUM_END, self.ws * R)
-        return y, y1, y2, self.e_pi * Bp, self.e_pi * (-Ap - b * Bp)
+        return y, y1, y2, float(self.e_pi * Bp), float(self.e_pi * (-Ap - b * Bp))
 
-    def at_pi(self, R):
+    def at_pi(self, R: FloatArray) -> float:
         """y(pi) only."""
-        return self.e_pi * (_mv(_CUM_END, self.ws * R))
+        return float(self.e_pi * (_mv(_CUM_END, self.ws * R)))
 
 
-def _omega0_condition(lam):
+def _omega0_condition(lam: float) -> tuple[float, float, float]:
     """(c1, c2, c3) of the strained first-order condition c1 u^5 + lam c2 u^2 + c3 = 0,
     u^2 = Omega0: y(pi) of L^{-1} applied to E0'', (E0^{3/2})' and E0^{3/2}."""
     k, beta, omega0 = _lam_params(lam)
@@ -230,18 +312,30 @@ def _omega0_condition(lam):
     e = np.exp(-b * _TH)
     s, c = np.sin(_TH), np.cos(_TH)
     E0, E1, E2 = e * s, e * (c - b * s), e * ((b * b - 1.0) * s - 2.0 * b * c)
-    return tuple(float(op.at_pi(g)) for g in (E2, 1.5 * np.sqrt(E0) * E1, E0 * np.sqrt(E0)))
+    c1, c2, c3 = (float(op.at_pi(g)) for g in (E2, 1.5 * np.sqrt(E0) * E1, E0 * np.sqrt(E0)))
+    return c1, c2, c3
 
 
-def _has_omega0(lam):
+def _has_omega0(lam: float) -> bool:
     c1, c2, c3 = _omega0_condition(lam)
     r = np.roots([c1, 0.0, 0.0, lam * c2, 0.0, c3])
     return any(abs(x.imag) <= 1e-9 * abs(x) and x.real > 0 for x in r)
 
 
-def strained_lam_bound(tol=1e-10) -> float:
+def strained_lam_bound(tol: float = 1e-10) -> float:
     """The lambda from which the strained first-order condition has no positive Omega0 (where
-    its two positive roots merge), by bisection between 1.9 (roots) and 2.2 (none)."""
+    its two positive roots merge), by bisection between 1.9 (roots) and 2.2 (none).
+
+    Parameters
+    ----------
+    tol : float
+        Width of the final bracket.
+
+    Returns
+    -------
+    float
+        The bracket's lower end (``STRAINED_LAM_BOUND`` is this value, pinned by a test).
+    """
     lo, hi = 1.9, 2.2
     while hi - lo > tol:
         mid = 0.5 * (lo + hi)
@@ -249,8 +343,10 @@ def strained_lam_bound(tol=1e-10) -> float:
     return lo
 
 
-def _power_coeffs(f, alpha, n):
-    """[p^0..p^n] of (sum_j f_j p^j)^alpha (rows of f; J. C. P. Miller's recurrence)."""
+def _power_coeffs(f: Sequence[Any], alpha: float, n: int) -> list[Any]:
+    """[p^0..p^n] of (sum_j f_j p^j)^alpha (rows of f; J. C. P. Miller's recurrence).
+
+    The coefficients are float arrays (node values) or floats (the strained Omega_m)."""
     g = [f[0] ** alpha]
     for m in range(1, n + 1):
         acc = 0.0
@@ -261,8 +357,8 @@ def _power_coeffs(f, alpha, n):
     return g
 
 
-def _cauchy(a, b, n):
-    """[p^n] of (sum a_j p^j)(sum b_j p^j), missing terms taken as 0."""
+def _cauchy(a: Sequence[Any], b: Sequence[Any], n: int) -> Any:
+    """[p^n] of (sum a_j p^j)(sum b_j p^j), missing terms taken as 0 (arrays or floats)."""
     return sum(a[j] * b[n - j] for j in range(n + 1) if j < len(a) and n - j < len(b))
 
 
@@ -277,7 +373,21 @@ class HamSolution:
     of (E_m, E_m', E_m'') in phi (strained)).
     """
 
-    def __init__(self, lam, order, c0, formulation):
+    lam: float
+    order: int
+    c0: float
+    formulation: str
+    k: float
+    beta: float
+    omega0: float
+    b: float
+    omega_s: float
+    theta_d: float
+    tau_d: float
+    Omega: list[float]
+    orders: list[tuple[FloatArray, FloatArray, FloatArray]]
+
+    def __init__(self, lam: RealLike, order: int, c0: float, formulation: str) -> None:
         self.formulation = check_formulation(formulation)
         self.order = check_order(order, formulation)
         self.c0 = check_c0(c0)
@@ -300,7 +410,7 @@ class HamSolution:
         self.tau_d = self.theta_d / self.omega_s
 
     # ------------------------------------------------------------------- the two cascades
-    def _zeroth(self):
+    def _zeroth(self) -> tuple[FloatArray, FloatArray, FloatArray]:
         b, e = self.b, np.exp(-self.b * _TH)
         s, c = np.sin(_TH), np.cos(_TH)
         E0 = e * s
@@ -308,7 +418,7 @@ class HamSolution:
         E2 = e * ((b * b - 1.0) * s - 2.0 * b * c)
         return E0, E1, E2
 
-    def _solve_paper(self):
+    def _solve_paper(self) -> None:
         lam, c0, w = self.lam, self.c0, self.omega0
         E0, E1, E2 = self._zeroth()
         # delta0 = E0/omega0; tau derivatives: d/dtau = omega0 d/dtheta
@@ -333,14 +443,14 @@ class HamSolution:
         self._vel_nodes = np.sum(dp, axis=0)
         self._past_matrix, self._past_state = self._cascade(end)
 
-    def _cascade(self, end):
+    def _cascade(self, end: Sequence[tuple[float, float]]) -> tuple[FloatArray, FloatArray]:
         """Past theta = pi: L_theta[delta_m - chi delta_{m-1}] = c0 delta_{m-1}'' (the fractional
         terms switched off), delta0'' = -2 b delta0' - (1 + b^2) delta0: z' = A z for
         z = (delta_0..delta_M, delta_0'..delta_M') in theta."""
         M, b, c0 = self.order, self.b, self.c0
         n = M + 1
         A = np.zeros((2 * n, 2 * n))
-        acc = []  # row vectors of delta_m'' over z
+        acc: list[FloatArray] = []  # row vectors of delta_m'' over z
         for m in range(n):
             row = np.zeros(2 * n)
             row[n + m] -= 2.0 * b
@@ -356,22 +466,23 @@ class HamSolution:
         z = np.array([e[0] for e in end] + [e[1] for e in end])
         return A, z
 
-    def _solve_strained(self):
+    def _solve_strained(self) -> None:
         lam, c0, b = self.lam, self.c0, self.b
         op = self._op
         E0, E1, E2 = self._zeroth()
         E, Ep, Epp = [E0], [E1], [E2]
-        Om = []
+        Om: list[float] = []
         for m in range(1, self.order + 1):
             Q = _power_coeffs(E, 0.5, m - 1)
             P = [_cauchy(Q, E, n) for n in range(m)]
             D = [1.5 * _cauchy(Q, Ep, n) for n in range(m)]
 
-            def forcing(om):
+            def forcing(om: list[float]) -> FloatArray:
                 Oh = _power_coeffs(om, -0.5, m - 1)
                 O3 = _power_coeffs(om, -1.5, m - 1)
-                return (_cauchy(om, Epp, m - 1) + lam * _cauchy(Oh, D, m - 1)
-                        + _cauchy(O3, P, m - 1))
+                out: FloatArray = (_cauchy(om, Epp, m - 1) + lam * _cauchy(Oh, D, m - 1)
+                                   + _cauchy(O3, P, m - 1))
+                return out
 
             if m == 1:
                 # y(pi) = 0: c1 Om0 + lam c2 Om0^{-1/2} + c3 Om0^{-3/2} = 0, i.e. with u^2 = Om0:
@@ -408,7 +519,7 @@ class HamSolution:
         self._vel_nodes = np.sum(Ep, axis=0)  # d delta/dtau = dE/dphi
 
     # ------------------------------------------------------------------------ evaluation
-    def _fit(self):
+    def _fit(self) -> None:
         self._cd = _mv(_FIT, self._delta_nodes)
         self._cv = _mv(_FIT, self._vel_nodes)
         scale = np.max(np.abs(self._delta_nodes))
@@ -420,33 +531,63 @@ class HamSolution:
                 f"close to lam_crit for this grid (beta/omega0 = {self.b:.3g}); use a smaller "
                 f"lambda")
 
-    def delta(self, theta):
-        """delta at theta (paper: continued past pi by the cascade; strained: 0 <= theta <= pi)."""
+    def delta(self, theta: RealArrayLike) -> FloatArray:
+        """delta at theta (paper: continued past pi by the cascade; strained: 0 <= theta <= pi).
+
+        Parameters
+        ----------
+        theta : float or array_like
+            theta = omega_s tau, >= 0 (strained: at most pi).
+
+        Returns
+        -------
+        ndarray
+            delta, of the shape of ``theta``.
+
+        Raises
+        ------
+        ValueError
+            theta > pi in the strained formulation.
+        """
         return self._eval(theta)[0]
 
-    def velocity(self, theta):
-        """d delta / d tau at theta."""
+    def velocity(self, theta: RealArrayLike) -> FloatArray:
+        """d delta / d tau at theta.
+
+        Parameters
+        ----------
+        theta : float or array_like
+            theta = omega_s tau, as in :meth:`delta`.
+
+        Returns
+        -------
+        ndarray
+            The velocity, of the shape of ``theta``.
+        """
         return self._eval(theta)[1]
 
-    def _eval(self, theta):
-        theta = np.asarray(theta, dtype=float)
-        x = _theta_to_x(theta)
-        d, v = _C.chebval(x, self._cd), _C.chebval(x, self._cv)
-        past = theta > np.pi
+    def _eval(self, theta: RealArrayLike) -> tuple[FloatArray, FloatArray]:
+        th = np.asarray(theta, dtype=float)
+        x = _theta_to_x(th)
+        # float64 coefficients at float64 points (numpy types chebval's result as floating)
+        d = cast(FloatArray, _C.chebval(x, self._cd))
+        v = cast(FloatArray, _C.chebval(x, self._cv))
+        past = th > np.pi
         if past.any():
             if self.formulation != "paper":
                 raise ValueError("the strained solution ends at phi = pi")
-            dp, vp = self._past(theta[past])
+            dp, vp = self._past(th[past])
             d, v = np.array(d, dtype=float), np.array(v, dtype=float)
             d[past], v[past] = dp, vp
         return d, v
 
-    def _past(self, theta):
+    def _past(self, theta: FloatArray) -> tuple[FloatArray, FloatArray]:
         n = self.order + 1
         Z = np.einsum("nij,j->ni", _expm_stack(self._past_matrix, theta - np.pi), self._past_state)
         return Z[:, :n].sum(axis=1), self.omega_s * Z[:, n:].sum(axis=1)
 
-    def _first_zero(self, fun, lo, hi, n=400):
+    def _first_zero(self, fun: Callable[[FloatArray], FloatArray], lo: float, hi: float,
+                    n: int = 400) -> float | None:
         """First theta in (lo, hi] where fun changes sign from positive; None if there is none."""
         th = np.linspace(lo, hi, n + 1)
         f = fun(th)
@@ -456,10 +597,11 @@ class HamSolution:
         j = neg[0] + 1
         if f[j] == 0.0:
             return float(th[j])
-        return scipy.optimize.brentq(lambda x: float(fun(np.array([x]))[0]), th[j - 1], th[j],
-                                     xtol=1e-15, rtol=1e-15, maxiter=200)
+        root: float = scipy.optimize.brentq(lambda x: float(fun(np.array([x]))[0]), th[j - 1],
+                                            th[j], xtol=1e-15, rtol=1e-15, maxiter=200)
+        return root
 
-    def _contact_end(self):
+    def _contact_end(self) -> float:
         if self.formulation == "strained":
             return math.pi
         root = self._first_zero(self.delta, 1e-6, math.pi)
@@ -471,13 +613,33 @@ class HamSolution:
         return root
 
     # ------------------------------------------------------------------------- quantities
-    def _pieces(self):
+    def _pieces(self) -> list[tuple[float, float]]:
         if self.theta_d <= np.pi:
             return [(0.0, self.theta_d)]
         return [(0.0, np.pi), (np.pi, self.theta_d)]
 
-    def summary(self) -> dict:
-        """delta_m, tau_dc, tau_d, e, F_m, impulse, int_F2 (as ``zener_sym.models`` use them)."""
+    def summary(self) -> dict[str, float]:
+        """delta_m, tau_dc, tau_d, e, F_m, impulse, int_F2 (as ``zener_sym.models`` use them).
+
+        Returns
+        -------
+        dict of str to float
+            The maximum compression and its time (first zero of the velocity), the contact
+            time, e = -delta'(tau_d), F_m = delta_m^(3/2), and the integrals of F and F^2 over
+            the contact.
+
+        Raises
+        ------
+        ValueError
+            The velocity has no zero before the contact end.
+
+        Examples
+        --------
+        >>> from zener_sym.ham.higher import solve
+        >>> s = solve(0.5, 2, c0=-1.0).summary()  # the paper's homotopy, order 2
+        >>> bool(0 < s["e"] < 1 and s["tau_dc"] < s["tau_d"])
+        True
+        """
         thc = self._first_zero(self.velocity, 1e-9, self.theta_d)
         if thc is None:
             raise ValueError(f"lambda = {self.lam!r}: no maximum of delta before the contact end")
@@ -487,15 +649,21 @@ class HamSolution:
             th = A + (B - A) * _QMAP
             d = np.maximum(self.delta(th), 0.0)
             wq = (B - A) * _QDMAP / self.omega_s
-            imp += _mv(_QEND, d * np.sqrt(d) * wq)
-            f2 += _mv(_QEND, d**3 * wq)
+            imp += float(_mv(_QEND, d * np.sqrt(d) * wq))
+            f2 += float(_mv(_QEND, d**3 * wq))
         e = -float(self.velocity(np.array([self.theta_d]))[0])
         return dict(delta_m=dm, tau_dc=thc / self.omega_s, tau_d=self.tau_d, e=e, F_m=dm**1.5,
                     impulse=float(imp), int_F2=float(f2))
 
     def squared_residual(self) -> float:
         """Liao's averaged squared residual of the integrated equation over the contact (module
-        docstring): (1/tau_d) int_0^tau_d (delta' - 1 + lambda delta^{3/2} + I)^2 dtau."""
+        docstring): (1/tau_d) int_0^tau_d (delta' - 1 + lambda delta^{3/2} + I)^2 dtau.
+
+        Returns
+        -------
+        float
+            E_M(c0) >= 0; 0 only for the exact solution.
+        """
         total, I0 = 0.0, 0.0
         for A, B in self._pieces():
             th = A + (B - A) * _QMAP
@@ -504,20 +672,32 @@ class HamSolution:
             wq = (B - A) * _QDMAP / self.omega_s
             I = I0 + _mv(_QCUM, F * wq)
             r = v - 1.0 + self.lam * F + I
-            total += _mv(_QEND, r * r * wq)
-            I0 += _mv(_QEND, F * wq)
+            total += float(_mv(_QEND, r * r * wq))
+            I0 += float(_mv(_QEND, F * wq))
         return float(total / self.tau_d)
 
-    def history(self, tau):
+    def history(self, tau: RealArrayLike) -> dict[str, FloatArray]:
         """delta, velocity, force, impulse at times ``tau`` (0 past the contact end; the
-        impulse keeps its final value)."""
-        tau = np.asarray(tau, dtype=float)
-        th = np.minimum(tau * self.omega_s, self.theta_d)
-        on = tau * self.omega_s < self.theta_d
-        d = np.zeros(tau.shape)
+        impulse keeps its final value).
+
+        Parameters
+        ----------
+        tau : float or array_like
+            Dimensionless times, >= 0.
+
+        Returns
+        -------
+        dict of str to ndarray
+            ``delta``, ``force`` = delta^(3/2), ``impulse`` (its integral from 0) and
+            ``velocity`` = 1 - impulse (the momentum balance), of the shape of ``tau``.
+        """
+        ta = np.asarray(tau, dtype=float)
+        th = np.minimum(ta * self.omega_s, self.theta_d)
+        on = ta * self.omega_s < self.theta_d
+        d = np.zeros(ta.shape)
         if on.any():
             d[on] = np.maximum(self.delta(th[on]), 0.0)
-        imp = np.zeros(tau.shape)
+        imp = np.zeros(ta.shape)
         I0 = 0.0
         for A, B in self._pieces():
             L = B - A
@@ -535,8 +715,25 @@ class HamSolution:
 
 
 # ------------------------------------------------------------------------- entry points
-def solve(lam, order, c0=None, formulation="paper") -> HamSolution:
+def solve(lam: RealLike, order: int, c0: float | None = None,
+          formulation: str = "paper") -> HamSolution:
     """The order-``order`` HAM solution at one lambda (c0 None: the optimum, :func:`optimal_c0`).
+
+    Parameters
+    ----------
+    lam : float
+        lambda, 0 <= lambda < lam_crit (Eq. 81); the strained formulation stops at
+        ``STRAINED_LAM_BOUND``.
+    order : int
+        1 to ``PAPER_MAX_ORDER`` (paper) or ``STRAINED_MAX_ORDER`` (strained).
+    c0 : float, optional
+        Liao's convergence-control parameter; None: the minimiser of the squared residual.
+    formulation : {'paper', 'strained'}
+        The homotopy (module docstring).
+
+    Returns
+    -------
+    HamSolution
 
     Raises
     ------
@@ -544,6 +741,13 @@ def solve(lam, order, c0=None, formulation="paper") -> HamSolution:
         Bad order (not a positive integer, or beyond the formulation: the paper's stops at 2),
         c0 not finite or zero, lambda outside [0, lam_crit), or a grid that does not resolve the
         solution.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.higher import solve
+    >>> sol = solve(0.0, 4, c0=-1.0, formulation="strained")
+    >>> bool(abs(sol.summary()["e"] - 1.0) < 1e-6)  # lambda = 0: elastic, e = 1
+    True
     """
     formulation = check_formulation(formulation)
     order = check_order(order, formulation)
@@ -552,9 +756,26 @@ def solve(lam, order, c0=None, formulation="paper") -> HamSolution:
     return HamSolution(lam, order, c0, formulation)
 
 
-def squared_residual(lam, order, c0, formulation="paper") -> float:
+def squared_residual(lam: RealLike, order: int, c0: float, formulation: str = "paper") -> float:
     """Liao's averaged squared residual E_M(c0) (module docstring); inf where the approximation
-    has no contact end."""
+    has no contact end.
+
+    Parameters
+    ----------
+    lam : float
+        lambda, as in :func:`solve`.
+    order : int
+        The HAM order, as in :func:`solve`.
+    c0 : float
+        Liao's convergence-control parameter, finite and non-zero.
+    formulation : {'paper', 'strained'}
+        The homotopy (module docstring).
+
+    Returns
+    -------
+    float
+        E_M(c0) >= 0, or inf.
+    """
     try:
         return HamSolution(lam, order, c0, formulation).squared_residual()
     except ValueError as exc:
@@ -566,9 +787,29 @@ def squared_residual(lam, order, c0, formulation="paper") -> float:
 _C0_GRID = np.linspace(C0_RANGE[0], C0_RANGE[1], 40)
 
 
-def optimal_c0(lam, order, formulation="paper") -> float:
+def optimal_c0(lam: RealLike, order: int, formulation: str = "paper") -> float:
     """The c0 in C0_RANGE minimising :func:`squared_residual` at this lambda and order: the best
-    of a 40-point grid, refined by a bounded Brent search between its neighbours."""
+    of a 40-point grid, refined by a bounded Brent search between its neighbours.
+
+    Parameters
+    ----------
+    lam : float
+        lambda, as in :func:`solve`.
+    order : int
+        The HAM order, as in :func:`solve`.
+    formulation : {'paper', 'strained'}
+        The homotopy (module docstring).
+
+    Returns
+    -------
+    float
+        The optimal c0, in ``C0_RANGE``.
+
+    Raises
+    ------
+    ValueError
+        Bad arguments, or no c0 of the range gives a contact end.
+    """
     formulation = check_formulation(formulation)
     order = check_order(order, formulation)
     _lam_params(lam)

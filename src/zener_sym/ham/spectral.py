@@ -34,10 +34,19 @@ which other lambda values share the call.
 """
 from __future__ import annotations
 
+import types
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 from ..numerics.chebyshev import cheb_nodes, clenshaw_take
 from ..numerics.integrate import cumulative_rows
+from ..typing import FloatArray, RealArrayLike
+
+#: integer row indices into a Ham1Series
+IntArray = npt.NDArray[np.intp]
 
 __all__ = ["Ham1Series", "rows_of", "summary_numpy", "N_GLOBAL", "N_PIECES", "N_LOCAL", "A_MAX", "TAIL_TOL",
            "SPAN_PAST"]
@@ -60,13 +69,13 @@ SPAN_PAST = 0.25
 _SCAN = 8
 
 
-def _first_kind(n):
+def _first_kind(n: int) -> tuple[FloatArray, FloatArray]:
     """Chebyshev points of the first kind, ascending, and the values -> coefficients matrix."""
     x = cheb_nodes(n)[::-1].copy()
     return x, np.linalg.inv(_C.chebvander(x, n - 1))
 
 
-def _theta(t):
+def _theta(t: FloatArray) -> tuple[FloatArray, FloatArray]:
     """theta = pi sin^2(pi t / 2) and d theta / dt."""
     s = np.sin(0.5 * np.pi * t)
     return np.pi * s * s, 0.5 * np.pi * np.pi * np.sin(np.pi * t)
@@ -84,9 +93,10 @@ _GINT = _C.chebint(np.eye(N_GLOBAL), lbnd=-1.0, axis=0)  # coefficients of the a
 _GINTFIT = _GINT @ _GFIT  # integrand values at the nodes -> coefficients of K
 
 
-def _k_matrix(t):
+def _k_matrix(t: FloatArray) -> FloatArray:
     """Matrix taking integrand values at the N_GLOBAL nodes to K at the points t (in [0, 1])."""
-    return (_C.chebvander(2.0 * np.asarray(t) - 1.0, N_GLOBAL) @ _GINTFIT).T
+    out: FloatArray = (_C.chebvander(2.0 * np.asarray(t) - 1.0, N_GLOBAL) @ _GINTFIT).T
+    return out
 
 
 _GKP = _k_matrix(np.append(_GT, 1.0))  # (N, N + 1): K at the global nodes, then at pi
@@ -102,13 +112,14 @@ _SV2 = _C.chebvander(-1.0 + 2.0 * np.arange(_SCAN + 1) / _SCAN, N_LOCAL - 1).T  
 _DER = np.vstack([_C.chebder(np.eye(N_LOCAL), axis=0), np.zeros((1, N_LOCAL))])  # d/dx, (n, n)
 
 
-def _rowmul(A, B):
+def _rowmul(A: npt.NDArray[np.floating[Any]], B: npt.NDArray[np.floating[Any]]) -> FloatArray:
     """A @ B over the last axis of A, one row at a time (a batched matmul): a row's digits do
     not depend on which other rows share the call, as they may in one blocked BLAS product."""
-    return np.matmul(A[..., None, :], B)[..., 0, :]
+    out: FloatArray = np.matmul(A[..., None, :], B)[..., 0, :]
+    return out
 
 
-def _h1():
+def _h1() -> types.SimpleNamespace:
     from .runtime_numpy import ham1
 
     return ham1
@@ -122,13 +133,22 @@ class Ham1Series:
     NaN in ``tau_d``), ``K_pi`` (3 x rows, K at theta = pi).
     """
 
-    def __init__(self, lam):
+    lam: FloatArray
+    k: FloatArray
+    beta: FloatArray
+    omega0: FloatArray
+    tpi: FloatArray
+    tau_d: FloatArray
+    ok: npt.NDArray[np.bool_]
+    K_pi: FloatArray
+
+    def __init__(self, lam: RealArrayLike) -> None:
         h1 = _h1()
-        lam = np.asarray(lam, dtype=float)
-        self.lam = lam
-        self.k, self.beta, self.omega0 = h1.params(lam)
+        la: FloatArray = np.asarray(lam, dtype=float)
+        self.lam = la
+        self.k, self.beta, self.omega0 = h1.params(la)
         self.tpi = np.pi / self.omega0
-        U, P, n = lam.size, N_PIECES, N_LOCAL
+        U, P, n = la.size, N_PIECES, N_LOCAL
         a = self.beta / (2.0 * self.omega0)
         tried = a <= A_MAX
         # 1. K at the global nodes and at pi, from the integrand at the global nodes
@@ -139,7 +159,7 @@ class Ham1Series:
         K, self.K_pi = K[:, :, :-1], np.ascontiguousarray(K[:, :, -1])
         # 2. delta at the global nodes, its series, re-expanded on the pieces
         tau_g = _GTH[None, :] / self.omega0[:, None]
-        d = h1.delta_from_K(tau_g, lam[:, None], *K)  # lam as a column: params once per row
+        d = h1.delta_from_K(tau_g, la[:, None], *K)  # lam as a column: params once per row
         gcoef = _rowmul(d, _GFIT.T)
         coef = _rowmul(gcoef, _REEXPAND).reshape(U, P, n)
         # truncation: the last two coefficients, globally and on every piece, against the largest
@@ -152,7 +172,7 @@ class Ham1Series:
         # 3. past pi/omega0 (K frozen at pi): one series in tau on [pi, (1 + SPAN_PAST) pi]/omega0
         self._seg2_den = SPAN_PAST * self.tpi  # length of that interval
         tn = self.tpi[:, None] + self._seg2_den[:, None] * (0.5 * (1.0 + _LX))
-        d2 = h1.delta_from_K(tn, lam[:, None], *(k[:, None] for k in self.K_pi))
+        d2 = h1.delta_from_K(tn, la[:, None], *(k[:, None] for k in self.K_pi))
         self._seg2 = _rowmul(d2, _LFIT.T)
         ok &= np.max(np.abs(self._seg2[:, -2:]), axis=1) <= TAIL_TOL * scale
         # 4. end of contact, on the series
@@ -165,7 +185,8 @@ class Ham1Series:
             np.concatenate([self._seg1.reshape(U * P, n), self._seg2]).T)
 
     # ----------------------------------------------------------------------- end of contact
-    def _seg1_eval(self, rows, t, order=0):
+    def _seg1_eval(self, rows: IntArray, t: FloatArray,
+                   order: int = 0) -> tuple[FloatArray, FloatArray]:
         """d^order delta / dt^order and the next derivative on the zeroth-order contact, at t in
         [0, 1], one t per row (order 0 with its derivative: Newton on delta; order 1: on delta')."""
         y = t * N_PIECES
@@ -173,20 +194,21 @@ class Ham1Series:
         x = 2.0 * (y - p) - 1.0
         c = self._seg1[rows, p]  # (m, n)
         V = _C.chebvander(x, N_LOCAL - 1)
-        out = []
+        out: list[FloatArray] = []
         for k in (order, order + 1):
-            ck = c
+            ck: FloatArray = c
             for _ in range(k):
                 ck = _rowmul(ck, _DER.T)
             out.append(np.einsum("mj,mj->m", ck, V) * (2.0 * N_PIECES) ** k)
-        return tuple(out)
+        return out[0], out[1]
 
-    def _K_at(self, rows, t):
+    def _K_at(self, rows: IntArray, t: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """K_cc, K_sc, K_ss at t in [0, 1], one t per row, from the global series."""
         M = _rowmul(_C.chebvander(2.0 * t - 1.0, N_GLOBAL), _GINTFIT)  # (m, N)
-        return tuple(np.einsum("mn,mn->m", self._fg[g, rows], M) for g in range(3))
+        cc, sc, ss = (np.einsum("mn,mn->m", self._fg[g, rows], M) for g in range(3))
+        return cc, sc, ss
 
-    def _contact_end(self):
+    def _contact_end(self) -> None:
         """tau_d: the first sign change of delta after 0 on a grid (_SCAN cells per piece, then
         _SCAN cells past pi/omega0), refined by Newton on the series. A row without one before
         (1 + SPAN_PAST) pi/omega0 is left to the kernels (ok = False)."""
@@ -217,7 +239,7 @@ class Ham1Series:
             xg = -1.0 + 2.0 * np.arange(_SCAN + 1) / _SCAN
             c = self._seg2[r]
 
-            def fun(x):
+            def fun(x: FloatArray) -> tuple[FloatArray, FloatArray]:
                 V = _C.chebvander(x, N_LOCAL - 1)
                 return (np.einsum("mj,mj->m", c, V),
                         np.einsum("mj,mj->m", _rowmul(c, _DER.T), V))
@@ -226,9 +248,32 @@ class Ham1Series:
             self.tau_d[r] = self.tpi[r] + self._seg2_den[r] * (0.5 * (1.0 + x))
 
     # ------------------------------------------------------------------------- evaluation
-    def delta(self, rows, tau):
-        """delta at times ``tau`` (>= 0) for rows ``rows`` (same shape, rows with ``ok``):
-        0 from the end of contact on."""
+    def delta(self, rows: npt.ArrayLike, tau: RealArrayLike) -> FloatArray:
+        """delta (42) at times ``tau`` (>= 0) for rows ``rows``: 0 from the end of contact on.
+
+        Parameters
+        ----------
+        rows : array_like of int
+            Row (lambda) of each time, same shape as ``tau``; rows with ``ok`` only.
+        tau : array_like
+            Times, >= 0 (not checked: the callers pass validated arrays).
+
+        Returns
+        -------
+        ndarray
+            delta0 + delta1 from the series, of the shape of ``tau``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from zener_sym.ham.runtime_numpy import ham1
+        >>> from zener_sym.ham.spectral import Ham1Series
+        >>> s = Ham1Series([0.5])
+        >>> tau = np.array([0.3, 1.0, 2.0])
+        >>> d = s.delta(np.zeros(3, dtype=int), tau)
+        >>> bool(np.allclose(d, ham1.delta(tau, 0.5), rtol=1e-12))  # the quadrature kernel
+        True
+        """
         rows = np.asarray(rows, dtype=np.intp)
         tau = np.asarray(tau, dtype=float)
         if rows.ndim >= 1 and rows.shape[-1] > 1 and rows.strides[-1] == 0:
@@ -244,20 +289,40 @@ class Ham1Series:
         x = np.where(on1, x1, x2)
         idx = np.where(on1, rows * N_PIECES + p, self.lam.size * N_PIECES + rows)
         d = clenshaw_take(self._cT, idx, x)
-        return np.where(tau < td, np.maximum(d, 0.0), 0.0)
+        out: FloatArray = np.where(tau < td, np.maximum(d, 0.0), 0.0)
+        return out
 
-    def impulse(self, rows, tau):
+    def impulse(self, rows: npt.ArrayLike, tau: RealArrayLike) -> FloatArray:
         """Impulse (47) int_0^min(tau, tau_d) F dtau: a Chebyshev antiderivative per row on
         [0, min(tau_d, pi/omega0)] and on [pi/omega0, max(tau_d, pi/omega0)], as the kernels
-        (``chebyshev.cumulative_integral``), with the force from the series."""
+        (``chebyshev.cumulative_integral``), with the force from the series.
+
+        Parameters
+        ----------
+        rows : array_like of int
+            Row (lambda) of each time, same shape as ``tau``.
+        tau : array_like
+            Times, >= 0.
+
+        Returns
+        -------
+        ndarray
+            The impulse up to each time (frozen after the end of contact).
+        """
         return self._contact_integral(lambda d: d * np.sqrt(d), rows, tau)
 
-    def summary(self) -> dict:
+    def summary(self) -> dict[str, FloatArray]:
         """First-order summary per row (NaN where ``ok`` is False): tau_dc, delta_m, tau_d, e,
         F_m, impulse, int_F2, as ``ham1_numpy.summary`` gives them from the quadrature kernels.
 
         tau_dc is the first zero of delta' on the zeroth-order contact (grid, then Newton on the
-        series); e = -delta'(tau_d) from the generated formula with K at tau_d."""
+        series); e = -delta'(tau_d) from the generated formula with K at tau_d.
+
+        Returns
+        -------
+        dict of str to ndarray
+            Field -> one value per row.
+        """
         h1 = _h1()
         U = self.lam.size
         out = {f: np.full(U, np.nan) for f in ("tau_dc", "delta_m", "e", "impulse", "int_F2")}
@@ -285,8 +350,8 @@ class Ham1Series:
             t_d = np.where(past, 1.0, (2.0 / np.pi) * np.arcsin(np.sqrt(np.minimum(
                 td * self.omega0[rows] / np.pi, 1.0))))
             K = self._K_at(rows, t_d)
-            K = tuple(np.where(past, kp, k) for kp, k in zip(self.K_pi[:, rows], K))
-            out["e"][rows] = -h1.delta_dot_from_K(td, lam, *K)
+            Kf = tuple(np.where(past, kp, k) for kp, k in zip(self.K_pi[:, rows], K))
+            out["e"][rows] = -h1.delta_dot_from_K(td, lam, *Kf)
             all_rows = np.arange(U)
             tau_end = np.where(ok, self.tau_d, 0.0)
             out["impulse"][rows] = self.impulse(all_rows, tau_end)[rows]
@@ -297,22 +362,27 @@ class Ham1Series:
         out["F_m"] = out["delta_m"] ** 1.5
         return out
 
-    def _contact_integral(self, power, rows, tau):
+    def _contact_integral(self, power: Callable[[FloatArray], FloatArray], rows: npt.ArrayLike,
+                          tau: RealArrayLike) -> FloatArray:
         rows = np.asarray(rows, dtype=np.intp)
         tau = np.asarray(tau, dtype=float)
         u = np.arange(self.lam.size)
         safe = np.where(self.ok, self.tau_d, self.tpi)
-        fun = lambda tt, r: power(self.delta(np.broadcast_to(r, tt.shape), tt))  # noqa: E731
+        def fun(tt: FloatArray, r: IntArray) -> FloatArray:
+            return power(self.delta(np.broadcast_to(r, tt.shape), tt))
+
         end = np.minimum(tau, safe.take(rows))
         tpi = self.tpi.take(rows)
         first = cumulative_rows(fun, np.zeros(u.size), np.minimum(safe, self.tpi), rows,
                                    np.minimum(end, tpi))
         second = cumulative_rows(fun, self.tpi, np.maximum(safe, self.tpi), rows,
                                     np.maximum(end, tpi))
-        return first + second
+        out: FloatArray = first + second
+        return out
 
 
-def _newton(fun, lo, hi, f_lo, f_hi, iters=60):
+def _newton(fun: Callable[[FloatArray], tuple[FloatArray, FloatArray]], lo: FloatArray,
+            hi: FloatArray, f_lo: FloatArray, f_hi: FloatArray, iters: int = 60) -> FloatArray:
     """Root of f in [lo, hi] with f(lo) > 0 >= f(hi), per element: from the secant point, Newton
     steps kept inside the bracket (bisection otherwise); ``fun(x) -> (f, f')``."""
     lo = np.array(lo, dtype=float)
@@ -335,26 +405,65 @@ def _newton(fun, lo, hi, f_lo, f_hi, iters=60):
     return x
 
 
-def rows_of(lam):
+def rows_of(lam: RealArrayLike) -> tuple[FloatArray, IntArray]:
     """Distinct lambda values of ``lam`` (sorted) and, per element, its row among them.
 
     A ``lam`` constant along its last axis (a column broadcast against times) is recognised
-    without sorting every element."""
-    lam = np.asarray(lam, dtype=float)
-    if lam.ndim >= 1 and lam.shape[-1] > 1 and np.array_equal(lam, np.broadcast_to(
-            lam[..., :1], lam.shape)):
-        u, inv = np.unique(lam[..., 0], return_inverse=True)
-        return u, np.broadcast_to(inv.reshape(lam.shape[:-1] + (1,)), lam.shape)
-    u, inv = np.unique(lam, return_inverse=True)
-    return u, inv.reshape(lam.shape)
+    without sorting every element.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        lambda values.
+
+    Returns
+    -------
+    unique : ndarray
+        The distinct values, sorted.
+    rows : ndarray of int
+        Of the shape of ``lam``: ``unique[rows] == lam``.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.spectral import rows_of
+    >>> u, rows = rows_of([0.5, 0.1, 0.5])
+    >>> u.tolist(), rows.tolist()
+    ([0.1, 0.5], [1, 0, 1])
+    """
+    la: FloatArray = np.asarray(lam, dtype=float)
+    u: FloatArray
+    if la.ndim >= 1 and la.shape[-1] > 1 and np.array_equal(la, np.broadcast_to(
+            la[..., :1], la.shape)):
+        u, inv = np.unique(la[..., 0], return_inverse=True)
+        return u, np.broadcast_to(inv.reshape(la.shape[:-1] + (1,)), la.shape)
+    u, inv = np.unique(la, return_inverse=True)
+    return u, inv.reshape(la.shape)
 
 
-def summary_numpy(lam) -> dict:
+def summary_numpy(lam: RealArrayLike) -> dict[str, FloatArray]:
     """ham1 summary in float64 (tau_dc, delta_m, tau_d, e, F_m, impulse, int_F2) from the
     per-lambda series, and from the quadrature kernels (``ham1_numpy.summary``) for the lambda
     values whose series fail their check (from lambda = 2.414 on). Same shape as ``lam``.
 
     This is the reference the ham1 summary table (:mod:`zener_sym.ham.table_build`) samples.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        lambda values, 0 <= lambda < lam_crit (Eq. 81).
+
+    Returns
+    -------
+    dict of str to ndarray
+        Field -> array of the shape of ``lam``.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.runtime_numpy import ham1
+    >>> from zener_sym.ham.spectral import summary_numpy
+    >>> s, k = summary_numpy([1.0]), ham1.summary([1.0])  # series, quadrature kernels
+    >>> all(abs(s[f][0] - k[f][0]) <= 1e-11 * abs(k[f][0]) for f in s)
+    True
     """
     u, rows = rows_of(lam)
     v = Ham1Series(u).summary()

@@ -17,8 +17,12 @@ from __future__ import annotations
 
 import functools
 import importlib
+from typing import TypedDict
 
 import numpy as np
+import numpy.typing as npt
+
+from ..typing import FloatArray, RealArrayLike
 
 __all__ = ["SUMMARY_RTOL", "in_range", "summary", "lam_max", "variable_ends"]
 
@@ -28,12 +32,45 @@ SUMMARY_RTOL = 1e-11
 
 def variable_ends(kind: str, a: float, b: float) -> tuple[float, float]:
     """The Chebyshev variable's ends on the lambda piece [a, b] of kind ``kind``: 'lam' (the
-    variable is lambda) or 'sqrt' (sqrt(lambda - a))."""
+    variable is lambda) or 'sqrt' (sqrt(lambda - a)).
+
+    Parameters
+    ----------
+    kind : {'lam', 'sqrt'}
+        The piece's variable.
+    a, b : float
+        The piece's ends in lambda, a < b.
+
+    Returns
+    -------
+    tuple of float
+        The variable at lambda = a and at lambda = b.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.table import variable_ends
+    >>> variable_ends("sqrt", 2.0, 2.25)
+    (0.0, 0.5)
+    """
     return (a, b) if kind == "lam" else (0.0, float(np.sqrt(b - a)))
 
 
+class _Tables(TypedDict):
+    """The generated table as arrays (see :func:`_tables`)."""
+
+    keys: tuple[str, ...]  # the tabulated fields, in COEF's order
+    inner: FloatArray  # starts of the pieces after the first
+    start: FloatArray  # start of every piece in lambda
+    top: float  # lam_crit, the table's (excluded) upper end
+    sqrt: npt.NDArray[np.bool_]  # piece in the variable sqrt(lambda - start)
+    ga: FloatArray  # the Chebyshev variable's ends per piece
+    gb: FloatArray
+    k: FloatArray  # 0, 1, ..., degree - 1
+    coef: FloatArray  # [piece, degree, field]
+
+
 @functools.cache
-def _tables() -> dict:
+def _tables() -> _Tables:
     """The generated table (the one source of its pieces and fields), loaded on first use, as
     arrays."""
     t = importlib.import_module("zener_sym.generated.ham1_table")
@@ -53,19 +90,66 @@ def _tables() -> dict:
 
 
 def lam_max() -> float:
-    """Upper end of the table (lam_crit; lambda itself must stay below it)."""
+    """Upper end of the table (lam_crit; lambda itself must stay below it).
+
+    Returns
+    -------
+    float
+        lam_crit (Eq. 81), 2.4424389...
+    """
     return _tables()["top"]
 
 
-def in_range(lam) -> np.ndarray:
-    """Boolean mask: lambda inside the table's range 0 <= lambda < lam_crit."""
+def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+    """Boolean mask: lambda inside the table's range 0 <= lambda < lam_crit.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        lambda values (any, NaN included: NaN is out of range).
+
+    Returns
+    -------
+    ndarray of bool
+        Of the shape of ``lam``.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.table import in_range
+    >>> in_range([0.0, 1.0, 2.5, -0.1]).tolist()
+    [True, True, False, False]
+    """
     lam = np.asarray(lam, dtype=float)
     return (lam >= 0.0) & (lam < _tables()["top"])
 
 
-def summary(lam) -> dict:
-    """The ham1 summary at ``lam`` (every element in range): delta_m, tau_dc, tau_d, e, F_m,
-    impulse, int_F2, arrays of the shape of ``lam`` (the model derives tau_dr, eta and xi)."""
+def summary(lam: RealArrayLike) -> dict[str, FloatArray]:
+    """The ham1 summary (Eq. 42) at ``lam`` from the Chebyshev tables.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        lambda values, each in the table's range 0 <= lambda < lam_crit (:func:`in_range`).
+
+    Returns
+    -------
+    dict of str to ndarray
+        delta_m, tau_dc, tau_d, e, F_m, impulse, int_F2, arrays of the shape of ``lam`` (the
+        model derives tau_dr, eta and xi), within ``SUMMARY_RTOL`` of the closed forms.
+
+    Raises
+    ------
+    ValueError
+        A lambda outside the table's range.
+
+    Examples
+    --------
+    >>> from zener_sym.ham.spectral import summary_numpy
+    >>> from zener_sym.ham.table import SUMMARY_RTOL, summary
+    >>> s, ref = summary(1.0), summary_numpy(1.0)  # the table, the series it was built from
+    >>> all(abs(s[f] - ref[f]) <= SUMMARY_RTOL * abs(ref[f]) for f in s)
+    True
+    """
     t = _tables()
     lam = np.asarray(lam, dtype=float)
     flat = lam.reshape(-1)

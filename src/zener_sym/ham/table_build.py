@@ -32,6 +32,8 @@ to be bit-reproducible across machines: the table is NOT in ``codegen.BUILDERS``
 from __future__ import annotations
 
 import pathlib
+from collections.abc import Mapping
+from typing import Any, TypedDict
 
 import numpy as np
 
@@ -39,6 +41,7 @@ from ..codegen import inputs_hash
 from ..codegen.tables import float_tuple, table_module
 from ..numerics.chebyshev import (cheb_coefficients, cheb_nodes, coefficient_difference,
                                   trim_trailing)
+from ..typing import FloatArray, RealArrayLike
 from .table import variable_ends
 
 #: Chebyshev points per lambda piece (first the two pieces in lambda, then the one in s).
@@ -59,14 +62,40 @@ KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
 KINDS = ("lam", "sqrt")
 
 
+class Tables(TypedDict):
+    """A built table, as :func:`build_tables` gives it and :func:`render` prints it."""
+
+    lam_cont: float
+    pieces: list[tuple[str, float, float]]
+    coef: dict[str, list[FloatArray]]
+
+
 def lam_crit() -> float:
+    """lam_crit (Eq. 81), the top of the last piece.
+
+    Returns
+    -------
+    float
+        ``LAM_CRIT`` of the generated HAM formulas.
+    """
     from .runtime_numpy import ham1 as ham1_numpy
 
     return float(ham1_numpy.LAM_CRIT)
 
 
-def reference(lam) -> dict:
-    """The float64 reference the table samples: the six tabulated functions at ``lam``."""
+def reference(lam: RealArrayLike) -> dict[str, FloatArray]:
+    """The float64 reference the table samples: the six tabulated functions at ``lam``.
+
+    Parameters
+    ----------
+    lam : float or array_like
+        lambda values, 0 <= lambda < lam_crit.
+
+    Returns
+    -------
+    dict of str to ndarray
+        ``KEYS`` -> 1-D arrays (``lam`` flattened, at least one element).
+    """
     from .spectral import summary_numpy
 
     v = summary_numpy(np.atleast_1d(np.asarray(lam, dtype=float)))
@@ -76,34 +105,86 @@ def reference(lam) -> dict:
 
 def continuation_lambda() -> float:
     """lam_cont: the lambda where the first-order end of contact tau_d equals pi/omega0
-    (below it tau_d > pi/omega0). Brent's method on the reference, to full precision."""
+    (below it tau_d > pi/omega0). Brent's method on the reference, to full precision.
+
+    Returns
+    -------
+    float
+        lam_cont, 2.0304532806...
+    """
     from scipy.optimize import brentq
 
     from .runtime_numpy import ham1 as ham1_numpy
 
-    def g(x):
+    def g(x: float) -> float:
         return float(np.exp(reference(x)["log_tau_d"][0])) - float(np.pi / ham1_numpy.params(x)[2])
 
     return float(brentq(g, *CONT_BRACKET, xtol=1e-16, rtol=8.9e-16, maxiter=200))
 
 
 def pieces(lam_cont: float) -> list[tuple[str, float, float]]:
-    """(kind, start, end) of every lambda piece."""
+    """(kind, start, end) of every lambda piece.
+
+    Parameters
+    ----------
+    lam_cont : float
+        Start of the piece in sqrt(lambda - lam_cont) (:func:`continuation_lambda`).
+
+    Returns
+    -------
+    list of (str, float, float)
+        ('lam', 0, LAM_SPLIT), ('lam', LAM_SPLIT, lam_cont), ('sqrt', lam_cont, lam_crit).
+    """
     return [("lam", 0.0, LAM_SPLIT), ("lam", LAM_SPLIT, lam_cont), ("sqrt", lam_cont, lam_crit())]
 
 
-def piece_nodes(kind: str, a: float, b: float, n: int) -> np.ndarray:
-    """The lambda nodes of a piece: Chebyshev points in its variable."""
+def piece_nodes(kind: str, a: float, b: float, n: int) -> FloatArray:
+    """The lambda nodes of a piece: Chebyshev points in its variable.
+
+    Parameters
+    ----------
+    kind : {'lam', 'sqrt'}
+        The piece's variable (:func:`zener_sym.ham.table.variable_ends`).
+    a, b : float
+        The piece's ends in lambda.
+    n : int
+        Number of Chebyshev points of the first kind.
+
+    Returns
+    -------
+    ndarray
+        The n lambda values, inside (a, b).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from zener_sym.ham.table_build import piece_nodes
+    >>> lam = piece_nodes("sqrt", 2.0, 2.25, 5)  # Chebyshev points in s = sqrt(lambda - 2)
+    >>> s = np.sqrt(lam - 2.0)
+    >>> bool(np.allclose(np.sort(s), 0.25 + 0.25 * np.cos((2 * np.arange(5)[::-1] + 1) * np.pi / 10)))
+    True
+    """
     ga, gb = variable_ends(kind, a, b)
     g = ga + (gb - ga) * (cheb_nodes(n) + 1.0) / 2.0
     return g if kind == "lam" else a + g * g
 
 
-def build_tables() -> dict:
-    """{"lam_cont": float, "pieces": [(kind, a, b)], "coef": {key: [1-D per piece]}}."""
+def build_tables() -> Tables:
+    """Sample the reference on every piece and fit its Chebyshev coefficients (slow: minutes).
+
+    Returns
+    -------
+    Tables
+        {"lam_cont": float, "pieces": [(kind, a, b)], "coef": {key: [1-D per piece]}}.
+
+    Raises
+    ------
+    RuntimeError
+        The reference gave a non-finite value at a node.
+    """
     lam_cont = continuation_lambda()
     ps = pieces(lam_cont)
-    coef = {k: [] for k in KEYS}
+    coef: dict[str, list[FloatArray]] = {k: [] for k in KEYS}
     for (kind, a, b), n in zip(ps, N_NODES):
         v = reference(piece_nodes(kind, a, b, n))
         for k in KEYS:
@@ -117,7 +198,13 @@ def build_tables() -> dict:
 def input_files() -> list[pathlib.Path]:
     """The sources the table is built from (its inputs hash): this builder, the reference it
     samples (``spectral``, the numpy kernels' runtime, the numerical primitives of
-    ``zener_sym.numerics``) and the generated HAM formulas it calls."""
+    ``zener_sym.numerics``) and the generated HAM formulas it calls.
+
+    Returns
+    -------
+    list of pathlib.Path
+        In the order they are hashed.
+    """
     from ..codegen import generated_dir
 
     here = pathlib.Path(__file__).resolve().parent
@@ -127,8 +214,19 @@ def input_files() -> list[pathlib.Path]:
     return files
 
 
-def render(tables: dict | None = None) -> str:
-    """Text of ``generated/ham1_table.py``."""
+def render(tables: Tables | None = None) -> str:
+    """Text of ``generated/ham1_table.py``.
+
+    Parameters
+    ----------
+    tables : Tables, optional
+        A built table; default: :func:`build_tables` now.
+
+    Returns
+    -------
+    str
+        The module text, with its do-not-edit header and inputs hash.
+    """
     t = build_tables() if tables is None else tables
     lines = [
         "#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
@@ -155,15 +253,33 @@ def render(tables: dict | None = None) -> str:
 
 
 def table_path() -> pathlib.Path:
+    """Where the table module lives: ``generated/ham1_table.py``.
+
+    Returns
+    -------
+    pathlib.Path
+        The file in :func:`zener_sym.codegen.generated_dir`.
+    """
     from ..codegen import generated_dir
 
     return generated_dir() / "ham1_table.py"
 
 
-def compare(stored: dict, fresh: dict) -> list[str]:
+def compare(stored: Mapping[str, Any], fresh: Tables) -> list[str]:
     """Differences beyond CHECK_RTOL between two tables, as readable lines (empty: they agree).
 
-    ``stored`` has the generated module's names: LAM_CONT, PIECES, COEF."""
+    Parameters
+    ----------
+    stored : mapping
+        The generated module's names: LAM_CONT, PIECES, COEF.
+    fresh : Tables
+        A table just built (:func:`build_tables`).
+
+    Returns
+    -------
+    list of str
+        One line per difference; empty when they agree.
+    """
     bad = []
     if abs(stored["LAM_CONT"] - fresh["lam_cont"]) > CHECK_RTOL * fresh["lam_cont"]:
         bad.append(f"lam_cont {stored['LAM_CONT']!r} != rebuilt {fresh['lam_cont']!r}")

@@ -4,9 +4,10 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 4169a544564e3027
+ * Inputs hash: bcaca2bee4db4c49
  * SymPy version: 1.14.0
  */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -23418,6 +23419,58 @@ static double zs__nan(void)
     return nan("");
 }
 
+/* zs__exp_pass: 1/ln2, ln2 = hi + lo (k hi exact for |k| <= 1010), 1.5 2^52 */
+#define ZS__EXP_INV_LN2 1.4426950408889634
+#define ZS__EXP_LN2_HI 0.6931471805598903
+#define ZS__EXP_LN2_LO 5.497923018708371e-14
+#define ZS__EXP_SHIFT 6755399441055744.0
+
+/* x[i] = exp(x[i]), i < 2 h, within about an ulp (codegen/c/fastmath.py): x = k ln2 + r,
+   |r| <= ln2/2, exp(x) = 2^k exp(r), exp(r) by its Taylor polynomial. One loop without
+   branches or calls over the points, which the compiler pairs (SSE2 at -O2): libm's exp, a
+   call a point, was a fifth of a history. |x| >= 700 or a NaN: libm's exp */
+static void zs__exp_pass(size_t h, double *x)
+{
+    double y[ZS__BLOCK];
+    size_t i;
+#if FLT_EVAL_METHOD != 0
+    /* wider intermediates (x87) would not round kd to an integer: libm's exp */
+    for (i = 0; i < 2 * h; i++)
+        x[i] = exp(x[i]);
+    return;
+#endif
+    for (i = 0; i < 2 * h; i++) {
+        double v = x[i], kd, k, r, p, s;
+        unsigned long long u;
+        /* round(v / ln2) in the low bits of kd (ZS__EXP_SHIFT = 1.5 2^52), and 2^k from them
+           (two's complement) */
+        kd = v * ZS__EXP_INV_LN2 + ZS__EXP_SHIFT;
+        memcpy(&u, &kd, sizeof u);
+        u = (u + 1023u) << 52;
+        memcpy(&s, &u, sizeof s);
+        k = kd - ZS__EXP_SHIFT;
+        r = (v - k * ZS__EXP_LN2_HI) - k * ZS__EXP_LN2_LO;
+        double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+        double e1_0 = (1.0 + 1.0 * r);
+        double e1_1 = (0.5 + 0.16666666666666666 * r);
+        double e1_2 = (0.041666666666666664 + 0.008333333333333333 * r);
+        double e1_3 = (0.001388888888888889 + 0.0001984126984126984 * r);
+        double e1_4 = (2.48015873015873e-05 + 2.7557319223985893e-06 * r);
+        double e1_5 = (2.755731922398589e-07 + 2.505210838544172e-08 * r);
+        double e1_6 = (2.08767569878681e-09 + 1.6059043836821613e-10 * r);
+        double e2_0 = (e1_0 + e1_1 * r2);
+        double e2_1 = (e1_2 + e1_3 * r2);
+        double e2_2 = (e1_4 + e1_5 * r2);
+        double e2_3 = e1_6;
+        double e3_0 = (e2_0 + e2_1 * r4);
+        double e3_1 = (e2_2 + e2_3 * r4);
+        p = (e3_0 + e3_1 * r8);
+        y[i] = p * s;
+    }
+    for (i = 0; i < 2 * h; i++) /* garbage in y where |x| >= 700: not used */
+        x[i] = x[i] > -700.0 && x[i] < 700.0 ? y[i] : exp(x[i]);
+}
+
 static void zs__summary_nan(double lam, zs_summary_t *out)
 {
     double q = zs__nan();
@@ -23745,26 +23798,52 @@ typedef struct {
 static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl, zs__piece_t *P)
 {
     const zs__mat *m = tp->m + ip * tp->n_sub + sub;
-    double (*o)[2] = P->m[sub];
-    int j, k, n = m->rows;
-    double acc[2 * ZS__MAX_ROWS]; /* a local the table cannot alias: the pairs vectorise */
+    double *o = P->m[sub][0];
+    int j, k, n = m->rows, cols = m->cols;
+    size_t w = 2 * (size_t)n; /* doubles in one lambda degree's block */
     if (n == 0) { /* no coefficients: the polynomial 0 */
-        o[0][0] = o[0][1] = 0.0;
+        o[0] = o[1] = 0.0;
         P->deg[sub] = 1;
         return;
     }
-    /* sum over the lambda degree k in order; the rows of field pairs are contiguous, so the
-       two fields' multiply-adds go as one pair (and the rows' sums overlap) */
-    for (j = 0; j < 2 * n; j++)
-        acc[j] = m->c[j] * Tl[0];
-    for (k = 1; k < m->cols; k++) {
-        const double *c = m->c + (size_t)k * 2 * (size_t)n, tk = Tl[k];
-        for (j = 0; j < 2 * n; j++)
-            acc[j] += c[j] * tk;
+    /* each coefficient the sum over the lambda degree k in order; four rows (eight doubles) at
+       a time in named accumulators (registers; the compiler pairs them), then pairs */
+    for (j = 0; j + 8 <= 2 * n; j += 8) {
+        const double *c = m->c + j;
+        double a0 = c[0] * Tl[0], a1 = c[1] * Tl[0], a2 = c[2] * Tl[0], a3 = c[3] * Tl[0];
+        double a4 = c[4] * Tl[0], a5 = c[5] * Tl[0], a6 = c[6] * Tl[0], a7 = c[7] * Tl[0];
+        for (k = 1; k < cols; k++) {
+            const double tk = Tl[k];
+            c += w;
+            a0 += c[0] * tk;
+            a1 += c[1] * tk;
+            a2 += c[2] * tk;
+            a3 += c[3] * tk;
+            a4 += c[4] * tk;
+            a5 += c[5] * tk;
+            a6 += c[6] * tk;
+            a7 += c[7] * tk;
+        }
+        o[j] = a0;
+        o[j + 1] = a1;
+        o[j + 2] = a2;
+        o[j + 3] = a3;
+        o[j + 4] = a4;
+        o[j + 5] = a5;
+        o[j + 6] = a6;
+        o[j + 7] = a7;
     }
-    for (j = 0; j < n; j++) {
-        o[j][0] = acc[2 * j];
-        o[j][1] = acc[2 * j + 1];
+    for (; j < 2 * n; j += 2) {
+        const double *c = m->c + j;
+        double a0 = c[0] * Tl[0], a1 = c[1] * Tl[0];
+        for (k = 1; k < cols; k++) {
+            const double tk = Tl[k];
+            c += w;
+            a0 += c[0] * tk;
+            a1 += c[1] * tk;
+        }
+        o[j] = a0;
+        o[j + 1] = a1;
     }
     P->deg[sub] = n;
 }
@@ -23927,11 +24006,13 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
     P[3].ra = 1.0 / sqrt(P[3].a);
     imp_end = 1.0 + c.e;
     /* blocks of points in three passes (piece and local variable; Horner; exp and outputs):
-       the Horner pass has no calls, so the processor overlaps the points' chains */
+       the Horner pass has no calls, so the processor overlaps the points' chains; the last
+       pass has no branches, so the compiler pairs the points (SSE2) */
     for (i0 = 0; i0 < n; i0 += ZS__BLOCK) {
-        size_t nb = n - i0 < ZS__BLOCK ? n - i0 : ZS__BLOCK, b;
+        size_t nb = n - i0 < ZS__BLOCK ? n - i0 : ZS__BLOCK, b, h2 = (nb + 1) / 2;
         int pc[ZS__BLOCK], sb[ZS__BLOCK];
-        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK], zr[ZS__BLOCK];
+        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK], dm[ZS__BLOCK], sm[ZS__BLOCK];
+        double hv[ZS__BLOCK];
         for (b = 0; b < nb; b++) {
             double tt = tau[i0 + b], z;
             int k, sub;
@@ -23941,16 +24022,22 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             else
                 p = 0;
             pc[b] = p;
-            if (p == 4)
+            /* delta = exp(f) dm and sqrt(delta) = exp(f / 2) sm */
+            dm[b] = sm[b] = 1.0;
+            if (p == 4) {
+                dm[b] = sm[b] = 0.0;
                 continue;
+            }
             Q = &P[p];
             k = t->piece[p].n_sub;
             if (p == 0) {
                 z = sqrt(tt * Q->a);
-                zr[b] = z;
+                dm[b] = tt;
+                sm[b] = z * Q->ra; /* sqrt(tau) from the map's z = sqrt(a tau) */
             } else if (p == 3) {
                 z = sqrt((Q->d - tt) * Q->a);
-                zr[b] = z;
+                dm[b] = Q->d - tt;
+                sm[b] = z * Q->ra;
             } else {
                 /* u = ln(1 + p) + ts i3 - ln(1 + q), p = ts i1, q = te i2 (table_build.lin_log),
                    the logarithms as one, ln(1 + (p - q) / (1 + q)): log1p of a small argument
@@ -23991,34 +24078,32 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             fv[b] = f;
             Iv[b] = I;
         }
-        for (b = 0; b < nb; b++) {
-            double tt = tau[i0 + b], d, sd, I = Iv[b];
-            p = pc[b];
-            /* h = exp(f / 2): delta = h^2 (times tau or tau_d - tau), and sqrt(delta) for the
-               force without a square root (the maps' z = sqrt(a tau) gives sqrt(tau)) */
-            if (p == 4) {
-                d = sd = 0.0;
-            } else {
-                double h = exp(0.5 * fv[b]);
-                d = h * h;
-                sd = h;
-                if (p == 0) {
-                    d *= tt;
-                    sd *= zr[b] * P[0].ra;
-                } else if (p == 3) {
-                    d *= P[3].d - tt;
-                    sd *= zr[b] * P[3].ra;
-                }
-            }
-            if (delta != NULL)
-                delta[i0 + b] = d;
-            if (impulse != NULL)
-                impulse[i0 + b] = I;
-            if (velocity != NULL)
-                velocity[i0 + b] = 1.0 - I;
-            if (force != NULL)
-                force[i0 + b] = sd * d;
+        if (nb % 2) { /* an even count for the paired loops below */
+            fv[nb] = 0.0;
+            dm[nb] = sm[nb] = 0.0;
         }
+        /* h = exp(f / 2) (zs__exp_pass: the points in pairs); delta = h^2 dm and sqrt(delta)
+           = h sm for the force without a square root */
+        for (b = 0; b < 2 * h2; b++)
+            hv[b] = 0.5 * fv[b];
+        zs__exp_pass(h2, hv);
+        for (b = 0; b < 2 * h2; b++) {
+            double h = hv[b];
+            fv[b] = h * h * dm[b];
+            hv[b] = h * sm[b] * fv[b];
+        }
+        if (delta != NULL)
+            for (b = 0; b < nb; b++)
+                delta[i0 + b] = fv[b];
+        if (force != NULL)
+            for (b = 0; b < nb; b++)
+                force[i0 + b] = hv[b];
+        if (impulse != NULL)
+            for (b = 0; b < nb; b++)
+                impulse[i0 + b] = Iv[b];
+        if (velocity != NULL)
+            for (b = 0; b < nb; b++)
+                velocity[i0 + b] = 1.0 - Iv[b];
     }
     return ZS_OK;
 }

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: bcaca2bee4db4c49
+ * Inputs hash: c8f3e0e76aa6ddaa
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -23421,8 +23421,8 @@ static double zs__nan(void)
 
 /* zs__exp_pass: 1/ln2, ln2 = hi + lo (k hi exact for |k| <= 1010), 1.5 2^52 */
 #define ZS__EXP_INV_LN2 1.4426950408889634
-#define ZS__EXP_LN2_HI 0.6931471805598903
-#define ZS__EXP_LN2_LO 5.497923018708371e-14
+#define ZS__LN2_HI 0.6931471805598903
+#define ZS__LN2_LO 5.497923018708371e-14
 #define ZS__EXP_SHIFT 6755399441055744.0
 
 /* x[i] = exp(x[i]), i < 2 h, within about an ulp (codegen/c/fastmath.py): x = k ln2 + r,
@@ -23449,26 +23449,67 @@ static void zs__exp_pass(size_t h, double *x)
         u = (u + 1023u) << 52;
         memcpy(&s, &u, sizeof s);
         k = kd - ZS__EXP_SHIFT;
-        r = (v - k * ZS__EXP_LN2_HI) - k * ZS__EXP_LN2_LO;
+        r = (v - k * ZS__LN2_HI) - k * ZS__LN2_LO;
         double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-        double e1_0 = (1.0 + 1.0 * r);
-        double e1_1 = (0.5 + 0.16666666666666666 * r);
-        double e1_2 = (0.041666666666666664 + 0.008333333333333333 * r);
-        double e1_3 = (0.001388888888888889 + 0.0001984126984126984 * r);
-        double e1_4 = (2.48015873015873e-05 + 2.7557319223985893e-06 * r);
-        double e1_5 = (2.755731922398589e-07 + 2.505210838544172e-08 * r);
-        double e1_6 = (2.08767569878681e-09 + 1.6059043836821613e-10 * r);
-        double e2_0 = (e1_0 + e1_1 * r2);
-        double e2_1 = (e1_2 + e1_3 * r2);
-        double e2_2 = (e1_4 + e1_5 * r2);
-        double e2_3 = e1_6;
-        double e3_0 = (e2_0 + e2_1 * r4);
-        double e3_1 = (e2_2 + e2_3 * r4);
-        p = (e3_0 + e3_1 * r8);
+        double r_1_0 = 1.0 + 1.0 * r;
+        double r_1_1 = 0.5 + 0.16666666666666666 * r;
+        double r_1_2 = 0.041666666666666664 + 0.008333333333333333 * r;
+        double r_1_3 = 0.001388888888888889 + 0.0001984126984126984 * r;
+        double r_1_4 = 2.48015873015873e-05 + 2.7557319223985893e-06 * r;
+        double r_1_5 = 2.755731922398589e-07 + 2.505210838544172e-08 * r;
+        double r_1_6 = 2.08767569878681e-09 + 1.6059043836821613e-10 * r;
+        double r_2_0 = r_1_0 + r_1_1 * r2;
+        double r_2_1 = r_1_2 + r_1_3 * r2;
+        double r_2_2 = r_1_4 + r_1_5 * r2;
+        double r_2_3 = r_1_6;
+        double r_3_0 = r_2_0 + r_2_1 * r4;
+        double r_3_1 = r_2_2 + r_2_3 * r4;
+        p = r_3_0 + r_3_1 * r8;
         y[i] = p * s;
     }
     for (i = 0; i < 2 * h; i++) /* garbage in y where |x| >= 700: not used */
         x[i] = x[i] > -700.0 && x[i] < 700.0 ? y[i] : exp(x[i]);
+}
+
+/* a[i] = ln(1 + a[i] / b[i]), a[i] / b[i] > -1, i < 2 h, within a few ulps (codegen/c/fastmath.py),
+   over the points in pairs as zs__exp_pass: w = 1 + r = 2^k (1 + f), 1 + f in [sqrt(1/2),
+   sqrt(2)) by integer operations on w's bits (as fdlibm/musl log), ln(1 + f) = f - f^2/2 +
+   s (f^2/2 + z Q(z)), s = f / (2 + f), z = s^2, and the rounding of w undone to first order,
+   + (r - (w - 1)) / w (Goldberg, "What every computer scientist should know about
+   floating-point arithmetic", Thm. 4: log1p of a small r keeps its relative accuracy) */
+static void zs__log1p_pass(size_t h, double *a, const double *b)
+{
+    size_t i;
+    for (i = 0; i < 2 * h; i++) {
+        double r = a[i] / b[i], w = 1.0 + r, m, f, s, z, q, hfsq, kd, k, c;
+        unsigned long long u, hx, kb;
+        memcpy(&u, &w, sizeof u);
+        hx = (u >> 32) + (0x3ff00000u - 0x3fe6a09eu);
+        kb = 0x4330000000000000ull + (hx >> 20); /* 2^52 + k + 1023 */
+        memcpy(&kd, &kb, sizeof kd);
+        k = kd - (4503599627370496.0 + 1023.0); /* 2^52 + 1023 */
+        hx = (hx & 0x000fffffu) + 0x3fe6a09eu;
+        u = (hx << 32) | (u & 0xffffffffu);
+        memcpy(&m, &u, sizeof m);
+        f = m - 1.0;
+        s = f / (2.0 + f);
+        z = s * s;
+        hfsq = 0.5 * f * f;
+        c = (r - (w - 1.0)) / w;
+        double z2 = z * z, z4 = z2 * z2, z8 = z4 * z4;
+        double z_1_0 = 0.6666666666666666 + 0.4 * z;
+        double z_1_1 = 0.2857142857142857 + 0.2222222222222222 * z;
+        double z_1_2 = 0.18181818181818182 + 0.15384615384615385 * z;
+        double z_1_3 = 0.13333333333333333 + 0.11764705882352941 * z;
+        double z_1_4 = 0.10526315789473684 + 0.09523809523809523 * z;
+        double z_2_0 = z_1_0 + z_1_1 * z2;
+        double z_2_1 = z_1_2 + z_1_3 * z2;
+        double z_2_2 = z_1_4;
+        double z_3_0 = z_2_0 + z_2_1 * z4;
+        double z_3_1 = z_2_2;
+        q = z_3_0 + z_3_1 * z8;
+        a[i] = ((s * (hfsq + z * q) + (k * ZS__LN2_LO + c)) - hfsq + f) + k * ZS__LN2_HI;
+    }
 }
 
 static void zs__summary_nan(double lam, zs_summary_t *out)
@@ -23521,12 +23562,16 @@ static void zs__core(const zs__exact_table *t, double lam, int history, zs__core
 {
     int last = (history ? t->n_hist : t->n_lam) - 1, i, j, deg = 0;
     double g, a, b, x, T[ZS__MAX_SUM], xi, e_direct;
-    /* piece: searchsorted(edges, lam, 'right') - 1, clipped to [0, last] (lam >= edges[0]);
-       an early exit the branch predictor learns, not a scan every call waits on */
+    /* piece: searchsorted(edges, lam, 'right') - 1, clipped to [0, last] (lam >= edges[0]):
+       the edges above the first that lam reached, counted without a branch */
+    /* ln lambda first, whichever the piece: the search then runs beside the logarithm
+       instead of before it (lambda > 0 keeps a lambda = 0 from raising FE_DIVBYZERO) */
+    g = log(lam > 0.0 ? lam : 1.0);
     i = 0;
-    while (i < last && t->edges[i + 1] <= lam)
-        i++;
-    g = t->log_piece[i] ? log(lam) : lam;
+    for (j = 1; j <= last; j++)
+        i += t->edges[j] <= lam;
+    if (!t->log_piece[i])
+        g = lam;
     a = t->ga[i];
     b = t->gb[i];
     /* a history: Python's division (the same x, the same piece ends); a summary: the division
@@ -23848,15 +23893,6 @@ static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl
     P->deg[sub] = n;
 }
 
-/* ln(1 + r) for r > -1 to a few ulps relative (Goldberg, "What every computer scientist should
-   know about floating-point arithmetic", Thm. 4): libm's log of w = 1 + r, times r / (w - 1),
-   which undoes the rounding of w. libm's log1p is twice log's time, most of a history point's */
-static double zs__log1p(double r)
-{
-    double w = 1.0 + r;
-    return w == 1.0 ? r : log(w) * (r / (w - 1.0));
-}
-
 /* constants of the lin_log map of piece A or M (exact.table._scaled_maps) */
 static void zs__lin_log(zs__piece_t *P, int k, double start, double end, double c1, double c2,
                         double c3)
@@ -24012,7 +24048,8 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
         size_t nb = n - i0 < ZS__BLOCK ? n - i0 : ZS__BLOCK, b, h2 = (nb + 1) / 2;
         int pc[ZS__BLOCK], sb[ZS__BLOCK];
         double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK], dm[ZS__BLOCK], sm[ZS__BLOCK];
-        double hv[ZS__BLOCK];
+        double hv[ZS__BLOCK], ln[ZS__BLOCK + 1], lq[ZS__BLOCK + 1], lz[ZS__BLOCK];
+        size_t li[ZS__BLOCK], nl = 0, l;
         for (b = 0; b < nb; b++) {
             double tt = tau[i0 + b], z;
             int k, sub;
@@ -24042,13 +24079,17 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
                 /* u = ln(1 + p) + ts i3 - ln(1 + q), p = ts i1, q = te i2 (table_build.lin_log),
                    the logarithms as one, ln(1 + (p - q) / (1 + q)): log1p of a small argument
                    keeps u's relative accuracy on a short piece (where u is small and
-                   a = k / (u1 - u0) large), at the cost of one log1p a point instead of two */
+                   a = k / (u1 - u0) large), at the cost of one log1p a point instead of two.
+                   The logarithm for all such points of the block at once (zs__log1p_pass) */
                 double ts = tt - Q->s, pp = ts * Q->i1, qq = (Q->e - tt) * Q->i2;
                 z = -Q->u0;
                 if (Q->i3 != 0.0)
                     z += ts * Q->i3;
-                z += zs__log1p((pp - qq) / (1.0 + qq));
-                z *= Q->a;
+                li[nl] = b;
+                lz[nl] = z;
+                ln[nl] = pp - qq;
+                lq[nl++] = 1.0 + qq;
+                continue;
             }
             if (!(z >= 0.0)) /* rounding at a piece's start (or a NaN): the first sub-piece */
                 z = 0.0;
@@ -24057,6 +24098,21 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             sb[b] = sub;
             if (Q->deg[sub] == 0)
                 zs__contract(&t->piece[p], c.ip, sub, Tl, Q);
+        }
+        ln[nl] = 0.0; /* an even count for the pass */
+        lq[nl] = 1.0;
+        zs__log1p_pass((nl + 1) / 2, ln, lq);
+        for (l = 0; l < nl; l++) {
+            zs__piece_t *Q = &P[pc[li[l]]];
+            int k = t->piece[pc[li[l]]].n_sub, sub;
+            double z = (lz[l] + ln[l]) * Q->a;
+            if (!(z >= 0.0))
+                z = 0.0;
+            sub = z < (double)k ? (int)z : k - 1;
+            xs[li[l]] = 2.0 * (z - sub) - 1.0;
+            sb[li[l]] = sub;
+            if (Q->deg[sub] == 0)
+                zs__contract(&t->piece[pc[li[l]]], c.ip, sub, Tl, Q);
         }
         for (b = 0; b < nb; b++) {
             double (*m)[2];

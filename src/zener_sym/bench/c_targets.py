@@ -18,6 +18,7 @@ import statistics
 import subprocess
 import tempfile
 import time
+from typing import Any
 
 import numpy as np
 
@@ -111,7 +112,8 @@ def compile_driver(folder: pathlib.Path) -> pathlib.Path | None:
     return exe
 
 
-def run(quick: bool = False, m: int = 200, k: int = 500, n_summary: int = 2000) -> list[dict]:
+def run(quick: bool = False, m: int = 200, k: int = 500,
+        n_summary: int = 2000) -> list[dict[str, Any]]:
     """The two C targets, as rows of the speed-target table."""
     import zener_sym as zs
 
@@ -143,7 +145,7 @@ def run(quick: bool = False, m: int = 200, k: int = 500, n_summary: int = 2000) 
     ts_np = statistics.median(t_np_sum) / n_summary
     n_pts = m * k
     yard = f"; libm exp {statistics.median(t_exp) * 1e9:.1f} ns a call on this machine"
-    rows = [
+    rows: list[dict[str, Any]] = [
         {"target": "C exact history per point (zs_history, force) vs numpy's (zs.history)",
          "grid": f"{m} lambda in [0, 5] x {k} tau; C {th_c / n_pts * 1e9:.1f} ns/point, "
                  f"numpy {th_np / n_pts * 1e9:.1f} ns/point" + yard,

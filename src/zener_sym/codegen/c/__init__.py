@@ -121,10 +121,11 @@ def build_source() -> str:
                      ("MAX_H1", h1_deg), ("MAX_FSUM", fdeg)):
         types = types.replace(f"@{key}@", str(val))
     runtime = _rt.RUNTIME
-    for key, val in (("TABLE_SWITCH", "\n".join(switch)), ("FORCE_SWITCH", "\n".join(fswitch)),
-                     ("EXP_CONSTANTS", _fastmath.exp_constants_c()),
-                     ("EXP_POLY", _fastmath.exp_poly_c())):
-        runtime = runtime.replace(f"@{key}@", val)
+    for slot, text in (("TABLE_SWITCH", "\n".join(switch)), ("FORCE_SWITCH", "\n".join(fswitch)),
+                       ("EXP_CONSTANTS", _fastmath.exp_constants_c()),
+                       ("EXP_POLY", _fastmath.exp_poly_c()),
+                       ("LOG_POLY", _fastmath.log_poly_c())):
+        runtime = runtime.replace(f"@{slot}@", text)
     text = (_c_header("zener_sym.c: exact tables, HAM kernels and their evaluation (C99, libm).")
             + types + "".join(data) + h1 + _ham.ham_c() + runtime)
     left = sorted(set(re.findall(r"@[A-Z_]+@", text)))

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: c8f3e0e76aa6ddaa
+ * Inputs hash: f039ca0bd2035b37
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -24114,6 +24114,8 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             if (Q->deg[sub] == 0)
                 zs__contract(&t->piece[pc[li[l]]], c.ip, sub, Tl, Q);
         }
+        /* Horner's rule; two neighbouring points of the same sub-piece (sorted times: most)
+           together, which the compiler pairs (SSE2) */
         for (b = 0; b < nb; b++) {
             double (*m)[2];
             double x = xs[b], f, I;
@@ -24125,6 +24127,49 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             }
             m = P[pc[b]].m[sb[b]];
             j = P[pc[b]].deg[sb[b]] - 1;
+            if (b + 3 < nb && pc[b + 3] == pc[b] && sb[b + 3] == sb[b] && pc[b + 1] == pc[b]
+                && sb[b + 1] == sb[b] && pc[b + 2] == pc[b] && sb[b + 2] == sb[b]) {
+                double x1 = xs[b + 1], x2 = xs[b + 2], x3 = xs[b + 3], f1, f2, f3, I1, I2, I3;
+                f = f1 = f2 = f3 = m[j][0];
+                I = I1 = I2 = I3 = m[j][1];
+                for (j = j - 1; j >= 0; j--) {
+                    f = f * x + m[j][0];
+                    f1 = f1 * x1 + m[j][0];
+                    f2 = f2 * x2 + m[j][0];
+                    f3 = f3 * x3 + m[j][0];
+                    I = I * x + m[j][1];
+                    I1 = I1 * x1 + m[j][1];
+                    I2 = I2 * x2 + m[j][1];
+                    I3 = I3 * x3 + m[j][1];
+                }
+                fv[b] = f;
+                fv[b + 1] = f1;
+                fv[b + 2] = f2;
+                fv[b + 3] = f3;
+                Iv[b] = I;
+                Iv[b + 1] = I1;
+                Iv[b + 2] = I2;
+                Iv[b + 3] = I3;
+                b += 3;
+                continue;
+            }
+            if (b + 1 < nb && pc[b + 1] == pc[b] && sb[b + 1] == sb[b]) {
+                double x1 = xs[b + 1], f1, I1;
+                f = f1 = m[j][0];
+                I = I1 = m[j][1];
+                for (j = j - 1; j >= 0; j--) {
+                    f = f * x + m[j][0];
+                    f1 = f1 * x1 + m[j][0];
+                    I = I * x + m[j][1];
+                    I1 = I1 * x1 + m[j][1];
+                }
+                fv[b] = f;
+                fv[b + 1] = f1;
+                Iv[b] = I;
+                Iv[b + 1] = I1;
+                b++;
+                continue;
+            }
             f = m[j][0];
             I = m[j][1];
             for (j = j - 1; j >= 0; j--) {

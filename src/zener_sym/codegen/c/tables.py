@@ -148,6 +148,10 @@ def _to_monomial(vals: list[str], rows: int, cols: int,
             for i in range(rows)]
 
 
+#: rows of a history matrix are padded to a multiple of this (zs__contract's register blocks)
+ROW_BLOCK = 4
+
+
 def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], keys: Sequence[str],
                n_lam: int, out: list[str], sizes: dict[str, int]) -> list[str]:
     """Append to ``out`` the history of every time piece and return the ``zs__tpiece``
@@ -167,7 +171,7 @@ def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], key
         for ip in range(n_lam):
             subs = [f[ip] if ip < len(f) else () for f in per]
             if not len(subs[0]) and not len(subs[1]):
-                entries.extend(["{0, 0, NULL}"] * n_sub)
+                entries.extend(["{0, 0, 0, NULL}"] * n_sub)
                 continue
             for fld, sb in zip(keys, subs):
                 if len(sb) != n_sub:
@@ -185,12 +189,15 @@ def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], key
                     mats.append(_to_monomial(parts[2:], rows, cols, convs[rows]))
                 R = max(len(m) for m in mats)
                 K = max(len(m[0]) for m in mats)
+                # rows zero-padded to a multiple of ROW_BLOCK: the C contraction then runs in
+                # whole blocks of registers (Horner still starts at row R - 1)
+                rp = -(-R // ROW_BLOCK) * ROW_BLOCK
                 vals = [m[j][k] if j < len(m) and k < len(m[j]) else 0.0
-                        for k in range(K) for j in range(R) for m in mats]
+                        for k in range(K) for j in range(rp) for m in mats]
                 arr = f"{p}_{tp}_{ip}_{s}"
                 out.append(_array(arr, vals, per_line=6))
-                entries.append(f"{{{R}, {K}, {arr}}}")
-                sizes["max_rows"] = max(sizes["max_rows"], R)
+                entries.append(f"{{{rp}, {K}, {R}, {arr}}}")
+                sizes["max_rows"] = max(sizes["max_rows"], rp)
                 sizes["max_lamdeg"] = max(sizes["max_lamdeg"], K)
         out.append(f"static const zs__mat {p}_{tp}[{len(entries)}] = {{\n    "
                    + ",\n    ".join(entries) + "\n};\n")

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: ef3e6e5d703f435e
+ * Inputs hash: 719bcebf32de615c
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -26652,6 +26652,7 @@ static double zs__nan(void)
 static void zs__exp_pass(size_t h, double *x)
 {
     double y[ZS__BLOCK];
+    unsigned long long big = 0;
     size_t i;
 #if FLT_EVAL_METHOD != 0
     /* wider intermediates (x87) would not round kd to an integer: libm's exp */
@@ -26661,7 +26662,11 @@ static void zs__exp_pass(size_t h, double *x)
 #endif
     for (i = 0; i < 2 * h; i++) {
         double v = x[i], kd, k, r, p, s;
-        unsigned long long u;
+        unsigned long long u, a;
+        /* |v| >= 700 or a NaN: big (the top bit of bits(700) - 1 - bits(|v|)) */
+        memcpy(&a, &v, sizeof a);
+        a &= 0x7fffffffffffffffull;
+        big |= (0x4085dfffffffffffull - a) >> 63;
         /* round(v / ln2) in the low bits of kd (ZS__EXP_SHIFT = 1.5 2^52), and 2^k from them
            (two's complement) */
         kd = v * ZS__EXP_INV_LN2 + ZS__EXP_SHIFT;
@@ -26687,7 +26692,11 @@ static void zs__exp_pass(size_t h, double *x)
         p = r_3_0 + r_3_1 * r8;
         y[i] = p * s;
     }
-    for (i = 0; i < 2 * h; i++) /* garbage in y where |x| >= 700: not used */
+    if (!big) {
+        memcpy(x, y, 2 * h * sizeof y[0]);
+        return;
+    }
+    for (i = 0; i < 2 * h; i++) /* garbage in y where |x| >= 700: libm's exp there */
         x[i] = x[i] > -700.0 && x[i] < 700.0 ? y[i] : exp(x[i]);
 }
 
@@ -27378,14 +27387,15 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
             if (Q->deg[sub] == 0)
                 zs__contract(&t->piece[pc[li[l]]], c.ip, sub, Tl, Q);
         }
-        /* Horner's rule; two neighbouring points of the same sub-piece (sorted times: most)
-           together, which the compiler pairs (SSE2) */
+        /* Horner's rule, f / 2 into hv (the exp pass's argument); four or two neighbouring
+           points of the same sub-piece (sorted times: most) together, independent chains
+           which the compiler pairs (SSE2) */
         for (b = 0; b < nb; b++) {
             double (*m)[2];
             double x = xs[b], f, I;
             int j;
             if (pc[b] == 4) {
-                fv[b] = 0.0;
+                hv[b] = 0.0;
                 Iv[b] = imp_end;
                 continue;
             }
@@ -27406,10 +27416,10 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
                     I2 = I2 * x2 + m[j][1];
                     I3 = I3 * x3 + m[j][1];
                 }
-                fv[b] = f;
-                fv[b + 1] = f1;
-                fv[b + 2] = f2;
-                fv[b + 3] = f3;
+                hv[b] = 0.5 * f;
+                hv[b + 1] = 0.5 * f1;
+                hv[b + 2] = 0.5 * f2;
+                hv[b + 3] = 0.5 * f3;
                 Iv[b] = I;
                 Iv[b + 1] = I1;
                 Iv[b + 2] = I2;
@@ -27427,8 +27437,8 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
                     I = I * x + m[j][1];
                     I1 = I1 * x1 + m[j][1];
                 }
-                fv[b] = f;
-                fv[b + 1] = f1;
+                hv[b] = 0.5 * f;
+                hv[b + 1] = 0.5 * f1;
                 Iv[b] = I;
                 Iv[b + 1] = I1;
                 b++;
@@ -27440,17 +27450,15 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
                 f = f * x + m[j][0];
                 I = I * x + m[j][1];
             }
-            fv[b] = f;
+            hv[b] = 0.5 * f;
             Iv[b] = I;
         }
         if (nb % 2) { /* an even count for the paired loops below */
-            fv[nb] = 0.0;
+            hv[nb] = 0.0;
             dm[nb] = sm[nb] = 0.0;
         }
         /* h = exp(f / 2) (zs__exp_pass: the points in pairs); delta = h^2 dm and sqrt(delta)
            = h sm for the force without a square root */
-        for (b = 0; b < 2 * h2; b++)
-            hv[b] = 0.5 * fv[b];
         zs__exp_pass(h2, hv);
         for (b = 0; b < 2 * h2; b++) {
             double h = hv[b];

@@ -18,11 +18,13 @@ sources (this package included) and the two table files.
 from __future__ import annotations
 
 import pathlib
+import re
 
 import sympy
 
 from .. import derivation_dir, generated_dir
 from .. import inputs_hash as _inputs_hash
+from . import fastmath as _fastmath
 from . import ham as _ham
 from . import runtime as _rt
 from . import tables as _tables
@@ -118,7 +120,15 @@ def build_source() -> str:
                      ("MAX_LAMDEG", sizes["max_lamdeg"]), ("MAX_SUM", sizes["max_sum"]),
                      ("MAX_H1", h1_deg), ("MAX_FSUM", fdeg)):
         types = types.replace(f"@{key}@", str(val))
-    runtime = _rt.RUNTIME.replace("@TABLE_SWITCH@", "\n".join(switch)).replace(
-        "@FORCE_SWITCH@", "\n".join(fswitch))
-    return (_c_header("zener_sym.c: exact tables, HAM kernels and their evaluation (C99, libm).")
+    runtime = _rt.RUNTIME
+    for slot, text in (("TABLE_SWITCH", "\n".join(switch)), ("FORCE_SWITCH", "\n".join(fswitch)),
+                       ("EXP_CONSTANTS", _fastmath.exp_constants_c()),
+                       ("EXP_POLY", _fastmath.exp_poly_c()),
+                       ("LOG_POLY", _fastmath.log_poly_c())):
+        runtime = runtime.replace(f"@{slot}@", text)
+    text = (_c_header("zener_sym.c: exact tables, HAM kernels and their evaluation (C99, libm).")
             + types + "".join(data) + h1 + _ham.ham_c() + runtime)
+    left = sorted(set(re.findall(r"@[A-Z_]+@", text)))
+    if left:
+        raise ValueError(f"C templates: slots {left} not filled by build_source")
+    return text

@@ -7,6 +7,8 @@ the machine's LAPACK.
 from __future__ import annotations
 
 import functools
+from collections.abc import Sequence
+from typing import Any
 
 import mpmath
 import sympy as sp
@@ -24,28 +26,29 @@ CUT = 60.0
 P3_TERMS = 12
 
 
-class CPrinter(C99CodePrinter):
+class CPrinter(C99CodePrinter):  # type: ignore[misc]  # sympy is untyped: its classes are Any
     """C99 printer for the kernels: pi as a literal macro (M_PI is not ISO C), P3 and Atan2 as
     the runtime's helpers."""
 
-    def _print_Pi(self, e):
+    def _print_Pi(self, e: Any) -> str:
         return "ZS__PI"
 
-    def _print_P3(self, e):
+    def _print_P3(self, e: Any) -> str:
         return f"zs__p3({self._print(e.args[0])})"
 
-    def _print_Atan2(self, e):
+    def _print_Atan2(self, e: Any) -> str:
         return f"atan2({self._print(e.args[0])}, {self._print(e.args[1])})"
 
 
 class HalfWavePrinter(CPrinter):
     """delta0 on its contact: its one sine, of omega0 tau, is the first half wave (0 past pi)."""
 
-    def _print_sin(self, e):
+    def _print_sin(self, e: Any) -> str:
         return f"zs__half_wave_sin({self._print(e.args[0])})"
 
 
-def block(printer, outputs, indent="    ", prefix="x") -> str:
+def block(printer: CPrinter, outputs: Sequence[tuple[str, Any]], indent: str = "    ",
+          prefix: str = "x") -> str:
     """C statements computing ``outputs`` [(lvalue, expr)] with shared subexpressions."""
     reps, reduced = sp.cse([ex for _, ex in outputs], symbols=sp.numbered_symbols(prefix),
                            order="canonical")
@@ -59,7 +62,7 @@ def lam_crit() -> sp.Float:
 
 
 @functools.cache
-def gauss_jacobi(n: int = N_NODES):
+def gauss_jacobi(n: int = N_NODES) -> tuple[list[float], list[float]]:
     """Nodes u in (0, 1) and weights of int_0^1 u^{1/2} h(u) du (Gauss-Jacobi, alpha = 0,
     beta = 1/2 on [-1, 1] mapped to [0, 1]), by Newton's method at 40 digits from the
     Chebyshev-like initial guesses of the roots."""

@@ -14,8 +14,11 @@ is one more entry in ``zener_sym.codegen.c.EXACT_TABLES``.
 from __future__ import annotations
 
 import math
+import os
 import runpy
+from collections.abc import Sequence
 from fractions import Fraction
+from typing import Any, SupportsFloat
 
 import mpmath
 
@@ -27,12 +30,12 @@ TIME_PIECES = ("C", "A", "M", "B")
 HAM1_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
 
 
-def load(path) -> dict:
+def load(path: str | os.PathLike[str]) -> dict[str, Any]:
     """A table module's globals, read from its file (not imported)."""
     return runpy.run_path(str(path))
 
 
-def num(v) -> str:
+def num(v: SupportsFloat | str) -> str:
     """A float as a C literal that reads back to the same double."""
     v = float(v)
     if not math.isfinite(v):
@@ -41,7 +44,7 @@ def num(v) -> str:
     return s if ("e" in s or "." in s) else s + ".0"
 
 
-def _array(name, values, per_line=6) -> str:
+def _array(name: str, values: Sequence[SupportsFloat | str], per_line: int = 6) -> str:
     vals = [v if isinstance(v, str) else num(v) for v in values]
     if not vals:
         vals = ["0.0"]
@@ -55,7 +58,7 @@ def _log_rounded(x: float) -> float:
         return float(mpmath.log(mpmath.mpf(x)))
 
 
-def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
+def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     """C text defining ``static const zs__exact_table zs__tab_<name>``, and its sizes."""
     pieces = tuple(ns.get("TIME_PIECES", TIME_PIECES))
     if pieces != TIME_PIECES or tuple(ns.get("HISTORY_KEYS", ("f", "I"))) != ("f", "I"):
@@ -97,7 +100,8 @@ def exact_table_c(name: str, ns: dict) -> tuple[str, dict]:
     return "".join(out), sizes
 
 
-def _summary_blocks(p, ns, keys, n_lam, out) -> int:
+def _summary_blocks(p: str, ns: dict[str, Any], keys: Sequence[str], n_lam: int,
+                    out: list[str]) -> int:
     """Append per lambda piece one block [degree][field] of the summary series ``keys``
     (interleaved, each zero-padded to the piece's longest: a padded term adds an exact 0, so
     each field's sum in order of degree is unchanged), the arrays ``<p>_sum`` (their pointers)
@@ -134,7 +138,8 @@ def _cheb_to_monomial_exact(n: int) -> list[list[Fraction]]:
     return rows
 
 
-def _to_monomial(vals: list[str], rows: int, cols: int, conv) -> list[list[float]]:
+def _to_monomial(vals: list[str], rows: int, cols: int,
+                 conv: list[list[Fraction]]) -> list[list[float]]:
     """A [rows: Chebyshev degree in time][cols: lambda degree] matrix (the file's digits) as
     [time power][lambda degree]: each coefficient the exact sum, rounded once (machine
     independent; ``exact.table._history_layout`` does the same conversion in float64)."""
@@ -143,7 +148,12 @@ def _to_monomial(vals: list[str], rows: int, cols: int, conv) -> list[list[float
             for i in range(rows)]
 
 
-def _history_c(name, p, ns, pieces, keys, n_lam, out, sizes) -> list[str]:
+#: rows of a history matrix are padded to a multiple of this (zs__contract's register blocks)
+ROW_BLOCK = 4
+
+
+def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], keys: Sequence[str],
+               n_lam: int, out: list[str], sizes: dict[str, int]) -> list[str]:
     """Append to ``out`` the history of every time piece and return the ``zs__tpiece``
     initialisers, in ``pieces`` order. Per lambda piece and sub-piece one matrix
     [lambda degree k][time power j][field] (``keys``' two fields interleaved, zero-padded to the
@@ -161,7 +171,7 @@ def _history_c(name, p, ns, pieces, keys, n_lam, out, sizes) -> list[str]:
         for ip in range(n_lam):
             subs = [f[ip] if ip < len(f) else () for f in per]
             if not len(subs[0]) and not len(subs[1]):
-                entries.extend(["{0, 0, NULL}"] * n_sub)
+                entries.extend(["{0, 0, 0, NULL}"] * n_sub)
                 continue
             for fld, sb in zip(keys, subs):
                 if len(sb) != n_sub:
@@ -179,19 +189,22 @@ def _history_c(name, p, ns, pieces, keys, n_lam, out, sizes) -> list[str]:
                     mats.append(_to_monomial(parts[2:], rows, cols, convs[rows]))
                 R = max(len(m) for m in mats)
                 K = max(len(m[0]) for m in mats)
+                # rows zero-padded to a multiple of ROW_BLOCK: the C contraction then runs in
+                # whole blocks of registers (Horner still starts at row R - 1)
+                rp = -(-R // ROW_BLOCK) * ROW_BLOCK
                 vals = [m[j][k] if j < len(m) and k < len(m[j]) else 0.0
-                        for k in range(K) for j in range(R) for m in mats]
+                        for k in range(K) for j in range(rp) for m in mats]
                 arr = f"{p}_{tp}_{ip}_{s}"
                 out.append(_array(arr, vals, per_line=6))
-                entries.append(f"{{{R}, {K}, {arr}}}")
-                sizes["max_rows"] = max(sizes["max_rows"], R)
+                entries.append(f"{{{rp}, {K}, {R}, {arr}}}")
+                sizes["max_rows"] = max(sizes["max_rows"], rp)
                 sizes["max_lamdeg"] = max(sizes["max_lamdeg"], K)
         out.append(f"static const zs__mat {p}_{tp}[{len(entries)}] = {{\n    "
                    + ",\n    ".join(entries) + "\n};\n")
         pieces_c.append(f"{{{n_sub}, {p}_{tp}}}")
     return pieces_c
 
-def ham1_table_c(ns: dict) -> tuple[str, int]:
+def ham1_table_c(ns: dict[str, Any]) -> tuple[str, int]:
     """C text of the ham1 summary table (``zs__h1_*``), and its largest degree."""
     pieces = ns["PIECES"]
     out = ["/* ---- ham1 summary table ---- */\n"]
@@ -229,7 +242,7 @@ FORCE_TIME_PIECES = ("C", "R")
 FORCE_HISTORY_KEYS = ("f", "v")
 
 
-def force_table_c(name: str, ns: dict) -> tuple[str, dict]:
+def force_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     """C text defining ``static const zs__force_table zs__ftab_<name>`` (a force-free-end table,
     ``generated/exact_force_table.py`` layout: summary in sqrt(lambda) below LOG_FROM, ln lambda
     above; history in time pieces C and R, fields f and v), and its sizes."""
@@ -247,7 +260,7 @@ def force_table_c(name: str, ns: dict) -> tuple[str, dict]:
     log_from = float(ns["LOG_FROM"])
     log = [a >= log_from for a in edges[:-1]]
 
-    def var(x, lg):
+    def var(x: float, lg: bool) -> float:
         return _log_rounded(x) if lg else math.sqrt(x)
 
     ga = [var(a, lg) for a, lg in zip(edges[:-1], log)]

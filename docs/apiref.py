@@ -50,6 +50,11 @@ MODULES = {
 #: Generated kernels (``generated/``, emitted by ``zener-sym generate``; never edited by hand).
 GENERATED = ["ham0", "ham1"]
 
+#: Abbreviations after which the one-line summaries of the reference's tables (autosummary's
+#: first sentence) do not end: Sphinx's own list and the paper's "Eq. 11", "Fig. 5". conf.py hands
+#: it to autosummary; tests/test_api_docs.py applies the same rule to every summary line.
+SUMMARY_ABBREVIATIONS = ("et al.", "e.g.", "i.e.", "vs.", "Eq.", "Eqs.", "Fig.", "Figs.", "cf.")
+
 _SKIP = {"__version__"}  # shown in the page text rather than as an object
 
 

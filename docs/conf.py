@@ -106,6 +106,10 @@ def setup(app):
 
 # --- API reference ----------------------------------------------------------------------------
 apiref.write(DOCS / "reference", zener_sym)
+# "(Eq. 66)" inside a summary line must not end the line in the reference's tables
+from sphinx.ext import autosummary as _autosummary  # noqa: E402
+
+_autosummary.WELL_KNOWN_ABBREVIATIONS = apiref.SUMMARY_ABBREVIATIONS
 autosummary_generate = True
 autosummary_imported_members = False
 autodoc_default_options = {"member-order": "bysource"}

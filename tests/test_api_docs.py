@@ -20,13 +20,17 @@ from __future__ import annotations
 import ast
 import doctest
 import importlib
+import importlib.util
 import inspect
 import io
+import re
 import textwrap
 import warnings
 from collections.abc import Callable, Iterator
 
 import pytest
+
+from conftest import ROOT
 from numpydoc.docscrape import ClassDoc, FunctionDoc, NumpyDocString
 
 #: Modules whose public objects are the documented API (the coordinator adds zener_sym.plot,
@@ -335,3 +339,52 @@ def test_dir_shows_only_the_documented_names() -> None:
     assert zs.exact is zener_sym.exact and zs.api.summary is zs.summary
     assert zener_sym.params.as_lambda(0.5).item() == 0.5
     assert set(zs.MODELS) >= {"exact", "hertz"}
+
+
+# -- the one-line summaries of the reference's tables -----------------------------------------
+def _abbreviations() -> tuple[str, ...]:
+    spec = importlib.util.spec_from_file_location("_docs_apiref", ROOT / "docs" / "apiref.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return tuple(module.SUMMARY_ABBREVIATIONS)
+
+
+#: autosummary's first-sentence rule (sphinx.ext.autosummary.extract_summary: a period and a space
+#: end the sentence unless it ends with one of the abbreviations docs/conf.py gives it), which cut
+#: "The lambda (Eq. 11) whose ..." to "The lambda (Eq." when "Eq." was not among them
+_PERIOD = re.compile(r"\.(?:\s+)")
+
+
+#: a summary that ends in an abbreviation ("Eq.", "Fig.", "Ref.") or leaves a bracket open was cut
+#: inside its sentence; a whole first sentence of a longer paragraph is fine
+_ABBREVIATED_END = re.compile(r"\b[A-Z][a-z]{0,3}\.$")
+
+
+def _cut_summary(doc: str, abbreviations: tuple[str, ...]) -> str | None:
+    """The summary line when autosummary would cut it inside a sentence, else None."""
+    first = " ".join(doc.strip().split("\n\n")[0].split())
+    sentences = _PERIOD.split(first)
+    shown = first
+    for i in range(len(sentences)):
+        shown = ". ".join(sentences[: i + 1]).rstrip(".") + "."
+        if not shown.endswith(abbreviations):
+            break
+    unbalanced = shown.count("(") != shown.count(")") or shown.count("[") != shown.count("]")
+    return first if unbalanced or _ABBREVIATED_END.search(shown) else None
+
+
+def test_reference_tables_show_whole_summary_lines() -> None:
+    abbreviations = _abbreviations()
+    cut = {name: s for name, obj in _all_objects()
+           if (s := _cut_summary(inspect.getdoc(obj) or "", abbreviations)) is not None}
+    assert not cut, cut
+
+
+def test_a_summary_cut_at_an_abbreviation_is_found() -> None:
+    line = "The lambda (Eq. 11) whose e is given.\n\nMore."
+    assert _cut_summary(line, ("e.g.",)) is not None
+    assert _cut_summary(line, _abbreviations()) is None
+    assert _cut_summary("One sentence. And a second one.", _abbreviations()) is None
+    assert _cut_summary("Force (in N. per unit) at t.", _abbreviations()) is not None
+    assert _cut_summary("The lambda whose e is given.\n\nSee Eq. 11.", ("e.g.",)) is None

@@ -344,11 +344,11 @@ def history(lam: RealArrayLike, tau: RealArrayLike, model: str = "exact",
 
 def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
             tau_d: RealArrayLike | None = None, contact_end: str = "delta") -> float | FloatArray:
-    """The lambda (Eq. 11) whose exact solution has a given restitution, energy loss or contact
-    duration: the inverse of :func:`summary`.
+    """The lambda whose exact solution has a given restitution, energy loss or contact duration.
 
-    Give exactly one of ``e``, ``xi``, ``tau_d``. Solved on the exact model's Chebyshev tables
-    (0 <= lambda <= 1000) by a safeguarded Newton iteration whose derivative is the tables' own
+    The inverse of :func:`summary` (lambda is Zener's parameter, Eq. 11). Give exactly one of
+    ``e``, ``xi``, ``tau_d``. Solved on the exact model's Chebyshev tables (0 <= lambda <= 1000)
+    by a safeguarded Newton iteration whose derivative is the tables' own
     (``zener_sym.exact.table.summary_derivative``), all values at once: ``summary(lam_for(e=x)).e``
     is within 1e-12 relative of x (the tables' accuracy against the true solution is 1e-11).
 

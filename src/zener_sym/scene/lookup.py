@@ -24,7 +24,7 @@ __all__ = ["parse_lam_grid", "lookup_table", "lookup_csv"]
 
 
 def parse_lam_grid(spec: str | RealArrayLike) -> FloatArray:
-    """A grid of Zener's lambda (Eq. 11) from ``"start:stop:n"``, ``"x"`` or values.
+    """A grid of Zener's lambda from ``"start:stop:n"``, ``"x"`` or values.
 
     Parameters
     ----------

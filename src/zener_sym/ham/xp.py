@@ -25,18 +25,10 @@ from ..numerics.mp import p3_mp
 
 __all__ = ["NUMPY", "MPMATH", "bind", "kernel_doc"]
 
-def _half_wave_sin(theta: Any) -> Any:
-    """``numerics.elementary.half_wave_sin`` in theta's shape, for a scalar or 0-d theta too:
-    its in-place steps need an array of at least one dimension (a numpy scalar raised
-    "return arrays must be of ArrayType")."""
-    th = numpy.asarray(theta, dtype=float)
-    return half_wave_sin(th.reshape(-1)).reshape(th.shape)
-
-
 #: float64 numpy.
 NUMPY = types.SimpleNamespace(
     exp=numpy.exp, sin=numpy.sin, cos=numpy.cos, sqrt=numpy.sqrt, atan2=numpy.arctan2,
-    pi=numpy.pi, rational=lambda p, q: p / q, p3=p3, half_wave_sin=_half_wave_sin)
+    pi=numpy.pi, rational=lambda p, q: p / q, p3=p3, half_wave_sin=half_wave_sin)
 
 
 class _Mpmath(types.SimpleNamespace):

@@ -81,7 +81,8 @@ def half_wave_sin(theta: RealArrayLike) -> FloatArray:
     ValueError
         If a theta is negative or NaN.
     """
-    th = np.asarray(theta, dtype=float)
+    shape = np.shape(theta)
+    th = np.asarray(theta, dtype=float).reshape(-1)  # the in-place steps need an array, not a 0-d
     if th.size and not th.min() >= 0:  # a NaN fails too
         raise ValueError("half_wave_sin: theta must be >= 0 (and not NaN)")
     y: FloatArray = _PI_HI - th
@@ -94,4 +95,4 @@ def half_wave_sin(theta: RealArrayLike) -> FloatArray:
         p *= s
         p += c
     p *= y
-    return p
+    return p.reshape(shape)

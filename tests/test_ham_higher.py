@@ -258,6 +258,20 @@ def study_rows():
     return ham_convergence.study()
 
 
+def test_freshness_forgives_only_a_last_digit_flip():
+    """A number at a rounding boundary may print one unit apart on another processor; two
+    units, another order of magnitude or changed text around the numbers are differences."""
+    same = ham_convergence._same_to_last_digit
+    row = "strained,1.01e+00,8,optimal,-1.22e+00,1.37e-12,4.38e-07,-1.30e-06,{},1.61e-06"
+    assert same(row.format("2.72e-07"), row.format("2.73e-07"))
+    assert same("| 0.125 |", "| 0.126 |")
+    assert not same(row.format("2.72e-07"), row.format("2.74e-07"))
+    assert not same(row.format("2.72e-07"), row.format("2.72e-06"))
+    assert not same(row.format("2.72e-07"), row.format("2.72e-07").replace("optimal", "paper"))
+    assert not same("| 0.125 |", "| 0.125 | 1 |")
+    assert not same("| strained | 1.01 | 8 |", "| strained | 1.01 | 9 |")
+
+
 def test_committed_convergence_table_is_fresh(study_rows):
     diffs = ham_convergence.check(root=ROOT, rows=study_rows)
     assert not diffs, "run 'zener-sym ham-convergence':\n" + "\n".join(diffs[:40])

@@ -63,7 +63,12 @@ N_TIME = {"C": 10, "R": 12}
 RTOL = 1e-13
 #: Trimming, rounding and ``--check`` tolerance: the plate builder's (:mod:`.table_build`).
 TRIM = _tb.TRIM
-CHECK_RTOL = _tb.CHECK_RTOL
+#: ``--check``'s tolerance (as the plate's, ``table_build.CHECK_RTOL``, but wider): the fits
+#: of the recovery piece R near the force-free end depend on the processor's BLAS and libm
+#: more than the plate's do. A rebuild on an AVX-512 machine (2026-11-26) differed from the
+#: committed table (built on an AVX2 one) by 1.93e-10 in one array, ('R', 'f') 11; the
+#: plate's by less than 1e-10. A changed builder moves coefficients far more.
+CHECK_RTOL = 1e-9
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m", "log_int_F2",
                 "log_tau_p")
@@ -275,4 +280,4 @@ def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
         summary["log_tau_p"] = tuple(summary["log_tau_p"])[:n]
         return {**t, "summary": summary}
 
-    return _tb.compare(sqrt_pieces_only(stored), sqrt_pieces_only(fresh))
+    return _tb.compare(sqrt_pieces_only(stored), sqrt_pieces_only(fresh), CHECK_RTOL)

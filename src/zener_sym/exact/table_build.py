@@ -630,8 +630,9 @@ def table_path() -> pathlib.Path:
     return path
 
 
-def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
-    """Differences beyond CHECK_RTOL between two tables.
+def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any],
+            rtol: float = CHECK_RTOL) -> list[str]:
+    """Differences beyond ``rtol`` (default CHECK_RTOL) between two tables.
 
     Parameters
     ----------
@@ -640,6 +641,8 @@ def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
         "history".
     fresh : mapping
         Rebuilt tables (``Tables``).
+    rtol : float
+        Largest coefficient difference, relative to its array's largest coefficient.
 
     Returns
     -------
@@ -677,8 +680,8 @@ def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
                 # history: a change that moves the field by less than HISTORY_TRIM of its scale
                 # (the trimming and rounding level) passes too
                 floor = q * HISTORY_TRIM / HISTORY_QUANTUM
-                err = coefficient_difference(c_new, c_old, floor / CHECK_RTOL)
-                if not err <= CHECK_RTOL:
+                err = coefficient_difference(c_new, c_old, floor / rtol)
+                if not err <= rtol:
                     bad.append(f"{kind} {key} array {i}: relative difference {err:.2e} "
-                               f"> {CHECK_RTOL:g}")
+                               f"> {rtol:g}")
     return bad

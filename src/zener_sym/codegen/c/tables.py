@@ -171,7 +171,7 @@ def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], key
         for ip in range(n_lam):
             subs = [f[ip] if ip < len(f) else () for f in per]
             if not len(subs[0]) and not len(subs[1]):
-                entries.extend(["{0, 0, 0, NULL}"] * n_sub)
+                entries.extend(["{0, 0, 0, NULL, {0}}"] * n_sub)
                 continue
             for fld, sb in zip(keys, subs):
                 if len(sb) != n_sub:
@@ -194,9 +194,19 @@ def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], key
                 rp = -(-R // ROW_BLOCK) * ROW_BLOCK
                 vals = [m[j][k] if j < len(m) and k < len(m[j]) else 0.0
                         for k in range(K) for j in range(rp) for m in mats]
+                # per block of ROW_BLOCK rows, the lambda degrees up to its last nonzero (at
+                # least 1): beyond them the contraction would add exact zeros
+                bcols = []
+                for b0 in range(0, rp, ROW_BLOCK):
+                    nz = [k for k in range(K) for j in range(b0, b0 + ROW_BLOCK) for m in mats
+                          if j < len(m) and k < len(m[j]) and m[j][k] != 0.0]
+                    bcols.append(str(max(nz, default=0) + 1))
+                if K > 255:
+                    raise ValueError(f"table {name}: {K} lambda degrees in {tp}/{ip}/{s}; the C "
+                                     "layout counts them in an unsigned char (at most 255)")
                 arr = f"{p}_{tp}_{ip}_{s}"
                 out.append(_array(arr, vals, per_line=6))
-                entries.append(f"{{{rp}, {K}, {R}, {arr}}}")
+                entries.append(f"{{{rp}, {K}, {R}, {arr}, {{{', '.join(bcols)}}}}}")
                 sizes["max_rows"] = max(sizes["max_rows"], rp)
                 sizes["max_lamdeg"] = max(sizes["max_lamdeg"], K)
         out.append(f"static const zs__mat {p}_{tp}[{len(entries)}] = {{\n    "

@@ -120,7 +120,10 @@ def run(out: pathlib.Path, quick: bool = False, log: Callable[[str], object] = p
         "",
         (_md_table(["target", "grid", "fast_s", "slow_s", "ratio", "required", "met"],
                    [{**r, "fast_s": f"{r['fast_s']:.3g}", "slow_s": f"{r['slow_s']:.3g}",
-                     "ratio": f"{r['ratio']:.3g}", "met": "yes" if r["met"] else "no"}
+                     "ratio": f"{r['ratio']:.3g}",
+                     # a row with required None is shown beside the targets, not judged
+                     "required": "—" if r["required"] is None else r["required"],
+                     "met": "—" if r["met"] is None else ("yes" if r["met"] else "no")}
                     for r in tg])
          if tg else "no target applies yet (the models they compare are not registered)"),
         "",

@@ -76,12 +76,12 @@ def _compile(args, cwd):
     return r
 
 
-def _load(d, name, flags):
-    """generated/c/zener_sym.c built in ``d`` as a shared library with ``flags``, loaded through
-    ctypes with the API's signatures."""
+def _load(d, name, flags, cc=None):
+    """generated/c/zener_sym.c built in ``d`` as a shared library with ``flags`` (by ``cc``,
+    default CC), loaded through ctypes with the API's signatures."""
     so = d / f"lib{name}.so"
-    _compile([CC, *flags, "-fPIC", "-shared", str(C_DIR / "zener_sym.c"), "-o", str(so), "-lm"],
-             d)
+    _compile([cc or CC, *flags, "-fPIC", "-shared", str(C_DIR / "zener_sym.c"), "-o", str(so),
+              "-lm"], d)
     L = ctypes.CDLL(str(so))
     P = ctypes.POINTER(ctypes.c_double)
     L.zs_summary.argtypes = [ctypes.c_double, ctypes.c_int, ctypes.POINTER(Summary)]
@@ -323,21 +323,33 @@ def _every_output(L):
     return out
 
 
-@pytest.mark.parametrize("flags", [
-    ["-O3", "-march=native"],  # the bench's judged build: this machine's vector units (AVX)
-    ["-O3"],                   # a CMake Release build
-    ["-O2", "-U__SSE2__", "-U__AVX__"],  # the plain C loops of the contraction (no vector types)
+CLANG = shutil.which("clang")
+
+
+@pytest.mark.parametrize("cc, flags", [
+    ("gcc", ["-O3", "-march=native"]),  # the bench's judged build: this machine's vector units
+    ("gcc", ["-O3"]),                   # a CMake Release build
+    ("gcc", ["-O2", "-U__SSE2__", "-U__AVX__"]),  # the contraction's plain C loops
     # GNU C contracts a * b + c into fused multiply-adds where the processor has them (moving a
     # history by up to 2.5e-11 before the source turned contraction off)
-    ["-std=gnu11", "-O3", "-march=native", "-ffp-contract=fast"],
-], ids=["O3-native", "O3", "O2-no-vector-types", "gnu11-O3-native-fp-contract"])
-def test_builds_give_the_same_doubles(tmp_path, lib, flags):
+    ("gcc", ["-std=gnu11", "-O3", "-march=native", "-ffp-contract=fast"]),
+    ("clang", ["-O3", "-march=native"]),
+    # clang's default contraction (-ffp-contract=on) obeys the source's STDC FP_CONTRACT OFF;
+    # an explicit -ffp-contract=fast overrides any pragma (clang's rule; examples/c/README.md)
+    ("clang", ["-std=gnu11", "-O3", "-march=native"]),
+], ids=["gcc-O3-native", "gcc-O3", "gcc-O2-no-vector-types", "gcc-gnu11-O3-native-fp-contract",
+        "clang-O3-native", "clang-gnu11-O3-native"])
+def test_builds_give_the_same_doubles(tmp_path, lib, cc, flags):
     """At any optimisation, instruction set and contraction setting: the same doubles as the
     -O2 build the other tests check against Python, bit for bit (the contraction's vector and
     scalar loops add the same terms in the same order; the source turns off fused
-    multiply-adds)."""
+    multiply-adds). The clang builds run where clang is installed (CI has gcc only)."""
+    if cc == "clang" and CLANG is None:
+        pytest.skip("clang is not installed: its builds are not compared here")
+    if cc == "gcc" and shutil.which("gcc") is None:
+        pytest.skip("gcc is not installed (the -O2 reference build used another cc)")
     std = [] if any(f.startswith("-std=") for f in flags) else STRICT
-    other = _load(tmp_path, "other", [*std, *flags])
+    other = _load(tmp_path, "other", [*std, *flags], cc=shutil.which(cc))
     for a, b in zip(_every_output(lib), _every_output(other), strict=True):
         np.testing.assert_array_equal(b, a)
 

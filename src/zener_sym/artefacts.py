@@ -205,6 +205,12 @@ def _ham_convergence_fresh(root: Path | None) -> Texts:
     return ham_convergence.fresh_texts(root)
 
 
+def _ham_convergence_same(rel: str, old: str, new: str) -> list[str]:
+    from .bench import ham_convergence
+
+    return ham_convergence.diff(rel, old, new)
+
+
 def _ham_convergence_write(root: Path | None, texts: Texts) -> list[Path]:
     from .bench import ham_convergence
 
@@ -368,7 +374,7 @@ ARTEFACTS: tuple[Artefact, ...] = (
     Artefact("ham-convergence", "convergence study of the HAM series",
              ("docs/ham_convergence.md", "docs/data/ham_convergence.csv",
               "docs/figures/ham_convergence.png"), _ham_convergence_fresh,
-             write=_ham_convergence_write, alias="ham-convergence"),
+             same=_ham_convergence_same, write=_ham_convergence_write, alias="ham-convergence"),
     Artefact("peers", "peers' e(v) against exact (table in docs/viscoelastic.md)",
              ("docs/viscoelastic.md",), _peers_fresh),
     Artefact("calibration", "the fit of A to the Bridges et al. ice law (docs/viscoelastic.md)",

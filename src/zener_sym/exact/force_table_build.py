@@ -61,7 +61,7 @@ N_SUB = {"C": 12, "R": 12}
 N_TIME = {"C": 10, "R": 12}
 #: Tolerance of the scipy solves at the nodes (force_end's default).
 RTOL = 1e-13
-#: Trimming, rounding and ``--check`` tolerance: the plate builder's (:mod:`.table_build`).
+#: Trimming and rounding: the plate builder's (:mod:`.table_build`); ``--check``'s tolerance below.
 TRIM = _tb.TRIM
 #: ``--check``'s tolerance (as the plate's, ``table_build.CHECK_RTOL``, but wider). A rebuild
 #: on an AVX-512 machine (2026-11-26) differed from the committed table (built on an AVX2

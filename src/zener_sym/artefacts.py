@@ -330,6 +330,12 @@ def _lambda_series_fresh(root: Path | None) -> Texts:
     return {"src/zener_sym/data/lambda_series.json": ls.coefficients_json(ctx)}
 
 
+def _lammps() -> ModuleType:
+    from .bench import lammps_artefacts
+
+    return lammps_artefacts
+
+
 _EXACT_FRESH, _EXACT_SAME = _table(
     "zener_sym.exact.table_build", (("summary", "SUMMARY"), ("history", "HISTORY")),
     "the builder or the solver")
@@ -385,6 +391,23 @@ ARTEFACTS: tuple[Artefact, ...] = (
              write=_figures_write, alias="figures --out docs/figures"),
     Artefact("audit", "the paper audit", ("AUDIT.md",), _audit_fresh,
              alias="audit --write"),
+    Artefact("lammps-error-law", "LAMMPS's measured e error over lambda and steps per contact "
+             "(zener-sym lammps reads it; runs LAMMPS)", ("src/zener_sym/data/lammps_error_law.json",),
+             lambda root: _lammps().law_fresh(root),
+             lambda rel, old, new: _lammps().law_same(rel, old, new), needs_checkout=False),
+    Artefact("lammps-convergence", "LAMMPS against the exact e: ladder of timesteps, observed "
+             "order, extrapolation (runs LAMMPS)",
+             ("docs/data/lammps_convergence.csv", "docs/data/lammps_orders.csv",
+              "docs/figures/lammps_convergence.png"),
+             lambda root: _lammps().convergence_fresh(root),
+             lambda rel, old, new: _lammps().csv_same(rel, old, new),
+             write=lambda root, texts: _lammps().convergence_write(root, texts)),
+    Artefact("lammps-stability", "the timestep beyond which LAMMPS loses the collision, over "
+             "lambda (runs LAMMPS)", ("docs/data/lammps_stability.csv",
+                                      "docs/figures/lammps_stability.png"),
+             lambda root: _lammps().stability_fresh(root),
+             lambda rel, old, new: _lammps().csv_same(rel, old, new),
+             write=lambda root, texts: _lammps().stability_write(root, texts)),
 )
 
 

@@ -16,10 +16,10 @@ from types import ModuleType
 from typing import NoReturn
 
 from . import (audit, bench, compare, derive, envelopes, exact_table, figures, fit, generate,
-               ham1_table, ham_convergence, regen, report, scene, table)
+               ham1_table, ham_convergence, lammps, regen, report, scene, table)
 
 #: The subcommand modules, in the order ``--help`` lists them.
-COMMANDS: tuple[ModuleType, ...] = (report, scene, compare, fit, figures, table, regen, generate,
+COMMANDS: tuple[ModuleType, ...] = (report, scene, compare, fit, lammps, figures, table, regen, generate,
                                     derive, audit, bench, envelopes, exact_table, ham1_table,
                                     ham_convergence)
 

@@ -1,0 +1,149 @@
+"""The LAMMPS studies as committed artefacts (``zener-sym regen lammps-*``): their fresh texts,
+their numeric comparison, and their charts.
+
+- ``lammps-error-law``: ``src/zener_sym/data/lammps_error_law.json``, read by ``zener-sym lammps``;
+- ``lammps-convergence``: ``docs/data/lammps_convergence.csv`` (the ladder),
+  ``docs/data/lammps_orders.csv`` (observed orders, extrapolation) and the chart;
+- ``lammps-stability``: ``docs/data/lammps_stability.csv`` and the chart.
+
+LAMMPS's doubles depend on its build and the machine's libm only in the last bits, so a
+committed file is stale when a number moves beyond ``RTOL`` (or ``ATOL`` near zero), or a text
+cell (a status, a failure class) changes.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from . import lammps_verify as lv
+
+__all__ = ["LAW", "CONVERGENCE", "ORDERS", "STABILITY", "CONVERGENCE_CHART", "STABILITY_CHART",
+           "law_fresh", "law_same", "convergence_fresh", "convergence_write", "stability_fresh",
+           "stability_write", "csv_same", "RTOL", "ATOL"]
+
+LAW = "src/zener_sym/data/lammps_error_law.json"
+CONVERGENCE = "docs/data/lammps_convergence.csv"
+ORDERS = "docs/data/lammps_orders.csv"
+STABILITY = "docs/data/lammps_stability.csv"
+CONVERGENCE_CHART = "docs/figures/lammps_convergence.png"
+STABILITY_CHART = "docs/figures/lammps_stability.png"
+#: Tolerances of the numeric comparison (errors are differences of e near 1: atol covers their
+#: rounding; the law keeps 4 digits).
+RTOL, ATOL = 2e-3, 1e-12
+
+Texts = dict[str, str]
+
+
+def _at(root: Path | None, rel: str) -> Path:
+    """A docs/ file of the checkout (these artefacts need one)."""
+    if root is None:
+        raise ValueError(f"{rel} lives in the source checkout, and there is none")
+    return Path(root) / rel
+
+
+def _close(a: str, b: str) -> bool:
+    try:
+        x, y = float(a), float(b)
+    except ValueError:
+        return a == b
+    if math.isnan(x) or math.isnan(y):
+        return math.isnan(x) and math.isnan(y)
+    return bool(np.isclose(x, y, rtol=RTOL, atol=ATOL))
+
+
+def csv_same(rel: str, old: str, new: str) -> list[str]:
+    """Cells that differ beyond the tolerance (text cells exactly)."""
+    a = list(csv.reader(io.StringIO(old)))
+    b = list(csv.reader(io.StringIO(new)))
+    if len(a) != len(b) or (a and a[0] != b[0]):
+        return [f"{rel}: {len(a)} rows committed, {len(b)} fresh (or another header)"]
+    bad = []
+    for i, (ra, rb) in enumerate(zip(a, b)):
+        for j, (x, y) in enumerate(zip(ra, rb)):
+            if not _close(x, y):
+                bad.append(f"{rel} row {i + 1} {a[0][j]}: committed {x}, fresh {y}")
+    return bad[:20]
+
+
+def law_fresh(root: Path | None) -> Texts:
+    return {LAW: lv.error_law_json(lv.build_error_law())}
+
+
+def law_same(rel: str, old: str, new: str) -> list[str]:
+    o, n = json.loads(old), json.loads(new)
+    if [o.get(k) for k in ("lambdas", "steps", "phases")] != [n.get(k) for k in ("lambdas", "steps", "phases")]:
+        return [f"{rel}: another grid of lambdas, steps or phases"]
+    bad = []
+    for end in ("force", "delta"):
+        for i, (ro, rn) in enumerate(zip(o["error"][end], n["error"][end])):
+            for j, (x, y) in enumerate(zip(ro, rn)):
+                if not _close(str(x if x is not None else "nan"), str(y if y is not None else "nan")):
+                    bad.append(f"{rel} {end} lambda={o['lambdas'][i]} steps={o['steps'][j]}: "
+                               f"committed {x}, fresh {y}")
+    return bad[:20]
+
+
+_CONV_ROWS: dict[str, list[dict[str, Any]]] = {}
+
+
+def convergence_fresh(root: Path | None) -> Texts:
+    rows = lv.convergence()
+    text = lv.convergence_csv(rows)
+    _CONV_ROWS[text] = rows
+    return {CONVERGENCE: text, ORDERS: orders_csv(lv.order_rows(rows))}
+
+
+def orders_csv(rows: list[dict[str, Any]]) -> str:
+    """The observed orders and extrapolations as CSV text."""
+    cols = ["geometry", "contact_end", "lambda", "steps_used", "order", "e_exact", "e_finest_err",
+            "e_extrapolated_err", "resolution"]
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(cols)
+    for r in rows:
+        w.writerow([f"{r[c]:.4g}" if isinstance(r[c], float) and c == "order"
+                    else (f"{r[c]:.6g}" if isinstance(r[c], float) else r[c]) for c in cols])
+    return buf.getvalue()
+
+
+def convergence_write(root: Path | None, texts: Texts) -> list[Path]:
+    from .lammps_charts import convergence_chart
+
+    out = []
+    for rel, text in texts.items():
+        p = _at(root, rel)
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(text, encoding="utf-8")
+        out.append(p)
+    rows = _CONV_ROWS.get(texts[CONVERGENCE]) or lv.convergence()
+    chart = _at(root, CONVERGENCE_CHART)
+    convergence_chart(rows, chart)
+    return out + [chart]
+
+
+_STAB_ROWS: dict[str, list[dict[str, Any]]] = {}
+
+
+def stability_fresh(root: Path | None) -> Texts:
+    rows = lv.stability()
+    text = lv.stability_csv(rows)
+    _STAB_ROWS[text] = rows
+    return {STABILITY: text}
+
+
+def stability_write(root: Path | None, texts: Texts) -> list[Path]:
+    from .lammps_charts import stability_chart
+
+    p = _at(root, STABILITY)
+    p.parent.mkdir(parents=True, exist_ok=True)
+    p.write_text(texts[STABILITY], encoding="utf-8")
+    rows = _STAB_ROWS.get(texts[STABILITY]) or lv.stability()
+    chart = _at(root, STABILITY_CHART)
+    stability_chart(rows, chart)
+    return [p, chart]

@@ -1,0 +1,109 @@
+"""``zener-sym lammps``: LAMMPS input lines for a grain contact, and the exact answers to check
+them by.
+
+    zener-sym lammps --sphere glass --radius 1mm --wall steel --e 0.8 --at 1m/s
+
+Prints the ``pair_coeff * * hertz/material ...`` line (two spheres) or the
+``fix wall/gran granular hertz/material ... zplane 0.0 NULL`` line (``--wall``), A, the damping
+coefficient, and a table over the speeds: lambda, e, the contact duration, the peak force and
+the largest timestep that keeps LAMMPS's e within 1e-3 of the exact one (``--json``: one JSON
+object). Nothing here runs LAMMPS: the lines are for the user's deck.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from ..scene.lammps import E_TOLERANCE, LammpsSetup, lammps_setup
+from ._types import Out, Subparsers
+from .scene import _material
+
+__all__ = ["add_parser", "run", "render"]
+
+
+def _e_value(text: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise ValueError(f"--e {text}: give a number in (0, 1], e.g. 0.8") from None
+
+
+def render(s: LammpsSetup) -> list[str]:
+    """The text output of ``zener-sym lammps``: the lines to paste, then the table."""
+    c = s.contact
+    what = "two spheres" if c.geometry == "pair" else "a sphere on a flat wall at z = 0"
+    out = [f"# LAMMPS (units si, atom_style sphere, comm_modify vel yes, fix nve/sphere): {what}",
+           f"# E* = {c.E_star:.6g} Pa, m_eff = {c.m_eff:.6g} kg, R_eff = {c.R_eff:.6g} m; "
+           f"contact end: {s.contact_end}"
+           + (" (limit_damping: no attractive force)" if s.contact_end == "force" else
+              " (delta = 0: the force turns attractive before)"), ""]
+    out += [f"{line}" for key in ("set", "pair_style", "pair_coeff", "fix_wall")
+            if key in s.lines for line in s.lines[key].splitlines()]
+    out += ["", f"A = {s.A_s:.6g} s   damping coefficient eta_n0 = {s.damping:.6g} 1/(s m)", "",
+            f"| v (m/s) | lambda | e | contact time (s) | peak force (N) | dt_max (s), "
+            f"|e_LAMMPS - e| <= {E_TOLERANCE:g} |",
+            "|---|---|---|---|---|---|"]
+    for r in s.table:
+        d = r["dt_max_s"]
+        dt = ("— (lambda beyond the measured law)" if d is None
+              else "— (finer than the measured steps)" if d == 0.0 else f"{d:.3g}")
+        out.append(f"| {r['v_m_s']:.4g} | {r['lambda']:.6g} | {r['e']:.6g} | "
+                   f"{r['contact_time_s']:.6g} | {r['max_force_N']:.6g} | {dt} |")
+    return out
+
+
+def run(args: argparse.Namespace, out: Out = print) -> int:
+    """``zener-sym lammps``: 0, or 2 with one line on stderr for bad input."""
+    try:
+        if args.wall is not None and (args.sphere2 is not None or args.radius2 is not None):
+            raise ValueError("give either --wall or a second sphere (--sphere2, --radius2), not both")
+        if (args.A is None) == (args.e is None):
+            raise ValueError("give either --A TIME or --e E with --at SPEED")
+        if args.e is not None and args.at is None:
+            raise ValueError("--e needs --at, the speed it is measured at (e.g. --at 1m/s)")
+        mat1 = _material(args.sphere, "sphere", None)
+        mat2 = None if args.sphere2 is None else _material(args.sphere2, "sphere2", None)
+        wall = None if args.wall is None else _material(args.wall, "wall", None)
+        speeds = None if args.speeds is None else [t for t in args.speeds.split(",") if t.strip()]
+        s = lammps_setup(mat1, args.radius, sphere2=mat2, radius2=args.radius2, wall=wall,
+                         A=args.A, e=None if args.e is None else _e_value(args.e), at=args.at,
+                         contact_end=args.contact_end, speeds=speeds)
+    except ValueError as exc:
+        print(f"zener-sym lammps: error: {exc}", file=sys.stderr)
+        return 2
+    if args.json:
+        out(json.dumps(s.to_json(), indent=1, allow_nan=False))
+    else:
+        for line in render(s):
+            out(line)
+    return 0
+
+
+def add_parser(sub: Subparsers) -> None:
+    p = sub.add_parser("lammps", help="LAMMPS input (pair_coeff or fix wall/gran, hertz/material "
+                       "with viscoelastic damping) for a dissipative constant or a measured e, "
+                       "with the exact e, contact time, peak force and timestep per speed")
+    p.add_argument("--sphere", required=True,
+                   help="sphere material: a preset (steel, glass, aluminium) or 'E,nu,rho' with "
+                        "units (9GPa,0.33,917kg/m^3)")
+    p.add_argument("--radius", required=True, help="sphere radius with a unit, e.g. 1mm")
+    p.add_argument("--sphere2", default=None, help="second sphere's material (default --sphere)")
+    p.add_argument("--radius2", default=None, help="second sphere's radius (default --radius)")
+    p.add_argument("--wall", default=None, help="a flat wall's material (as --sphere) instead of "
+                   "a second sphere")
+    p.add_argument("--A", dest="A", default=None, metavar="TIME",
+                   help="dissipative constant with a unit, e.g. 240ns")
+    p.add_argument("--e", dest="e", default=None, metavar="E",
+                   help="coefficient of restitution to reach at --at")
+    p.add_argument("--at", default=None, metavar="SPEED",
+                   help="normal impact speed of --e, with a unit (e.g. 1m/s); with --A the "
+                        "centre of the default speeds (1 m/s)")
+    p.add_argument("--contact-end", dest="contact_end", default="force", choices=("force", "delta"),
+                   help="force: limit_damping, no attractive force (default); delta: contact "
+                        "lasts to zero overlap")
+    p.add_argument("--speeds", default=None, metavar="V1,V2,...",
+                   help="speeds of the table, each with a unit (default: nine over a decade on "
+                        "each side of --at)")
+    p.add_argument("--json", action="store_true", help="one JSON object instead of text")
+    p.set_defaults(func=run)

@@ -330,6 +330,12 @@ def _lambda_series_fresh(root: Path | None) -> Texts:
     return {"src/zener_sym/data/lambda_series.json": ls.coefficients_json(ctx)}
 
 
+def _lammps_docs() -> ModuleType:
+    from .bench import lammps_docs
+
+    return lammps_docs
+
+
 def _lammps() -> ModuleType:
     from .bench import lammps_artefacts
 
@@ -408,6 +414,14 @@ ARTEFACTS: tuple[Artefact, ...] = (
              lambda root: _lammps().stability_fresh(root),
              lambda rel, old, new: _lammps().csv_same(rel, old, new),
              write=lambda root, texts: _lammps().stability_write(root, texts)),
+    Artefact("lammps-mpi", "the example deck of 10 000 grains on a wall, run with mpirun -np 2 "
+             "(and 1): every grain's e against the exact e(v)",
+             ("examples/lammps/in.impacts", "docs/data/lammps_mpi.csv", "docs/figures/lammps_mpi.png"),
+             lambda root: _lammps().mpi_fresh(root),
+             lambda rel, old, new: _lammps().mpi_same(rel, old, new),
+             write=lambda root, texts: _lammps().mpi_write(root, texts)),
+    Artefact("lammps-docs", "the tables of docs/lammps.md from the LAMMPS data above (no run)",
+             ("docs/lammps.md",), lambda root: _lammps_docs().fresh(root)),
 )
 
 

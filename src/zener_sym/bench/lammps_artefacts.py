@@ -13,6 +13,7 @@ cell (a status, a failure class) changes.
 from __future__ import annotations
 
 import csv
+import difflib
 import io
 import json
 import math
@@ -23,7 +24,8 @@ import numpy as np
 
 from . import lammps_verify as lv
 
-__all__ = ["LAW", "CONVERGENCE", "ORDERS", "STABILITY", "CONVERGENCE_CHART", "STABILITY_CHART",
+__all__ = ["MPI_DECK", "MPI_SUMMARY", "MPI_CHART", "mpi_fresh", "mpi_same", "mpi_write",
+           "LAW", "CONVERGENCE", "ORDERS", "STABILITY", "CONVERGENCE_CHART", "STABILITY_CHART",
            "law_fresh", "law_same", "convergence_fresh", "convergence_write", "stability_fresh",
            "stability_write", "csv_same", "RTOL", "ATOL"]
 
@@ -33,6 +35,9 @@ ORDERS = "docs/data/lammps_orders.csv"
 STABILITY = "docs/data/lammps_stability.csv"
 CONVERGENCE_CHART = "docs/figures/lammps_convergence.png"
 STABILITY_CHART = "docs/figures/lammps_stability.png"
+MPI_DECK = "examples/lammps/in.impacts"
+MPI_SUMMARY = "docs/data/lammps_mpi.csv"
+MPI_CHART = "docs/figures/lammps_mpi.png"
 #: Tolerances of the numeric comparison (errors are differences of e near 1: atol covers their
 #: rounding; the law keeps 4 digits).
 RTOL, ATOL = 2e-3, 1e-12
@@ -147,3 +152,42 @@ def stability_write(root: Path | None, texts: Texts) -> list[Path]:
     chart = _at(root, STABILITY_CHART)
     stability_chart(rows, chart)
     return [p, chart]
+
+
+_MPI: dict[str, dict[str, Any]] = {}
+
+
+def mpi_fresh(root: Path | None) -> Texts:
+    from . import lammps_mpi
+
+    result = lammps_mpi.study()
+    text = lammps_mpi.summary_csv(result)
+    _MPI[text] = result
+    return {MPI_DECK: str(result["in_impacts"]), MPI_SUMMARY: text}
+
+
+def mpi_same(rel: str, old: str, new: str) -> list[str]:
+    if rel == MPI_DECK:  # the deck is text: any change is a difference
+        return list(difflib.unified_diff(old.splitlines(), new.splitlines(), f"{rel} (committed)",
+                                         f"{rel} (fresh)", lineterm=""))
+    return csv_same(rel, old, new)
+
+
+def mpi_write(root: Path | None, texts: Texts) -> list[Path]:
+    from .lammps_charts import mpi_chart
+
+    out = []
+    for rel, text in texts.items():
+        p = _at(root, rel)
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(text, encoding="utf-8")
+        out.append(p)
+    result = _MPI.get(texts[MPI_SUMMARY])
+    if result is None:
+        from . import lammps_mpi
+
+        result = lammps_mpi.study()
+    cmp = result["comparison"]
+    chart = _at(root, MPI_CHART)
+    mpi_chart(cmp.v, cmp.e_lammps, cmp.e_exact, chart)
+    return out + [chart]

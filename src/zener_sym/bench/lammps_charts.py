@@ -118,28 +118,31 @@ def lv_top(rows: Sequence[dict[str, Any]]) -> float:
     return float(max(lims)) if lims else 1.0
 
 
-def mpi_chart(v: np.ndarray, e_lammps: np.ndarray, e_exact_fn: Any, contact_end: str,
+def mpi_chart(v: np.ndarray, e_lammps: np.ndarray, e_exact: np.ndarray,
               path: str | os.PathLike[str]) -> None:
     """LAMMPS's e(v) of every grain on the exact curve, and the error distribution."""
     from ..plot.style import PAGE_WIDTH, legend_outside, rc, style_for
 
     order = np.argsort(v)
-    v, e_l = v[order], e_lammps[order]
-    e_x = e_exact_fn(v)
+    v, e_l, e_x = v[order], e_lammps[order], e_exact[order]
     with rc() as plt:
         fig, (a, b) = plt.subplots(1, 2, figsize=(PAGE_WIDTH, 3.0))
-        a.semilogx(v, e_l, ls="none", marker=".", ms=1.5, color="#56B4E9",
+        kw = style_for("exact")
+        kw.update(lw=0.8, zorder=2)
+        a.semilogx(v, e_x, **kw)
+        a.semilogx(v, e_l, ls="none", marker=".", ms=2.0, color="#56B4E9", zorder=3,
                    label=f"LAMMPS, {len(v)} grains (2 MPI ranks)")
-        a.semilogx(v, e_x, **style_for("exact"))
+        a.set_title(r"$e(v_0)$ of every grain, force-free end")
         a.set_xlabel(r"$v_0$ (m/s)")
         a.set_ylabel(r"$e$")
-        a.set_title(r"$e(v_0)$ of every grain")
         err = e_l - e_x
-        b.hist(err, bins=60, color="#56B4E9")
-        b.set_xlabel(r"$e_{\rm LAMMPS} - e_{\rm exact}$")
+        b.hist(err * 1e3, bins=60, color="#56B4E9")
+        b.axvline(-1.0, color="#7F7F7F", ls=":", lw=0.8)
+        b.axvline(1.0, color="#7F7F7F", ls=":", lw=0.8, label=r"$\pm 10^{-3}$ (the table's promise)")
+        b.set_xlabel(r"$(e_{\rm LAMMPS} - e_{\rm exact}) \times 10^3$")
         b.set_ylabel("grains")
         b.set_title("error distribution")
-        legend_outside(a)
+        legend_outside(fig, ncol=3)
         fig.tight_layout()
         fig.savefig(path, dpi=150, metadata={"Software": None}, bbox_inches="tight")
         plt.close(fig)

@@ -41,12 +41,13 @@ fine = lammps_setup("glass", "1 mm", wall="steel", A=setup.A_s, speeds=list(v_fi
 with style.rc() as plt:
     fig, (a, b) = plt.subplots(1, 2, figsize=(style.PAGE_WIDTH, 2.6), layout="constrained")
     a.semilogx(v_fine, [r["e"] for r in fine.table], **style.style_for("exact"))
-    a.semilogx(v, e1, ls="none", marker="o", color="#0072B2", label=r"LAMMPS, $\Delta t_{\max}$")
+    a.semilogx(v, e1, ls="none", marker="o", color=style.style_for("lammps")["color"],
+               label=r"LAMMPS, $\Delta t_{\max}$")
     a.semilogx(v, e10, ls="none", marker="s", markerfacecolor="none", color="#D55E00",
                label=r"LAMMPS, $10\,\Delta t_{\max}$")
     a.set_xlabel(style.label("V0"))
     a.set_ylabel(style.label("e"))
-    b.semilogx(v, np.abs(e1 - e), ls="none", marker="o", color="#0072B2")
+    b.semilogx(v, np.abs(e1 - e), ls="none", marker="o", color=style.style_for("lammps")["color"])
     b.semilogx(v, np.abs(e10 - e), ls="none", marker="s", markerfacecolor="none", color="#D55E00")
     b.axhline(1e-3, color="#7F7F7F", ls=":", lw=0.8, label=r"$10^{-3}$")
     b.set_yscale("log")

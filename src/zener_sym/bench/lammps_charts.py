@@ -62,9 +62,10 @@ def stability_chart(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str]
     """Left: the steps per contact LAMMPS needs to keep the collision (the stability limit) over
     lambda, marked by how it fails one rung coarser; right: LAMMPS's e at the limit (hollow)
     and one rung beyond it (filled) beside the exact e (black)."""
-    from ..plot.style import PAGE_WIDTH, legend_outside, rc
+    from ..plot.style import PAGE_WIDTH, legend_outside, rc, style_for
 
-    colors = {"force": "#0072B2", "delta": "#D55E00"}
+    lc = style_for("lammps")["color"]
+    colors = {"force": lc, "delta": lc}  # LAMMPS's colour; the ends by line style and fill
     dashes = {"force": "-", "delta": "--"}
     top = max(lv_top(rows), 1.0)
     with rc() as plt:
@@ -73,11 +74,12 @@ def stability_chart(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str]
             sel = [r for r in rows if r["contact_end"] == end]
             lam = np.array([r["lambda"] for r in sel])
             lim = np.array([r["steps_at_limit"] for r in sel], dtype=float)
-            a.loglog(lam, lim, color=colors[end], lw=1.0, label=_END_TITLE[end])
+            a.loglog(lam, lim, color=colors[end], lw=1.0, ls=dashes[end], label=_END_TITLE[end])
             for r in sel:
                 if math.isfinite(r["steps_at_limit"]):
                     a.loglog(r["lambda"], r["steps_at_limit"], ls="none", color=colors[end],
-                             marker=_FAIL_MARKERS.get(r["failure_beyond"], "o"), ms=5)
+                             marker=_FAIL_MARKERS.get(r["failure_beyond"], "o"), ms=5,
+                             markerfacecolor=colors[end] if end == "force" else "none")
                 else:  # unstable on the whole ladder: the limit lies above its finest rung
                     a.annotate("", xy=(r["lambda"], 3 * top), xytext=(r["lambda"], top),
                                arrowprops=dict(arrowstyle="->", color=colors[end]))
@@ -86,7 +88,7 @@ def stability_chart(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str]
             beyond = [(r["lambda"], r["e_beyond"]) for r in sel
                       if math.isfinite(r["e_beyond"]) and r["e_beyond"] > 0]
             if beyond:
-                b.loglog(*zip(*beyond), ls="none", marker="o", ms=3, color=colors[end])
+                b.loglog(*zip(*beyond), ls="none", marker="x", ms=4, color=colors[end])
             lam_fine = np.geomspace(min(lam), max(lam), 200)
             b.loglog(lam_fine, summary(lam_fine, model="exact", contact_end=end).e,
                      color="#000000", ls=dashes[end], lw=1.0, label=f"exact, {end} end")
@@ -95,9 +97,9 @@ def stability_chart(rows: Sequence[dict[str, Any]], path: str | os.PathLike[str]
                 a.plot([], [], ls="none", marker=mk, color="#7F7F7F", label=f"beyond: {name}")
         a.plot([], [], ls="none", marker=r"$\uparrow$", color="#7F7F7F",
                label="limit above the ladder")
-        b.plot([], [], ls="none", marker="o", markerfacecolor="none", color="#7F7F7F",
+        b.plot([], [], ls="none", marker="o", markerfacecolor="none", color=lc,
                label="LAMMPS at the limit")
-        b.plot([], [], ls="none", marker="o", color="#7F7F7F", label="LAMMPS one rung beyond")
+        b.plot([], [], ls="none", marker="x", color=lc, label="LAMMPS one rung coarser")
         a.set_xlabel(r"$\lambda$")
         a.set_ylim(top=5 * top)
         a.set_ylabel("steps per contact at the limit")
@@ -130,13 +132,13 @@ def mpi_chart(v: np.ndarray, e_lammps: np.ndarray, e_exact: np.ndarray,
         kw = style_for("exact")
         kw.update(lw=0.8, zorder=2)
         a.semilogx(v, e_x, **kw)
-        a.semilogx(v, e_l, ls="none", marker=".", ms=2.0, color="#56B4E9", zorder=3,
-                   label=f"LAMMPS, {len(v)} grains (2 MPI ranks)")
+        a.semilogx(v, e_l, ls="none", marker=".", ms=2.0, color=style_for("lammps")["color"],
+                   zorder=3, label=f"LAMMPS, {len(v)} grains (2 MPI ranks)")
         a.set_title(r"$e(v_0)$ of every grain, force-free end")
         a.set_xlabel(r"$v_0$ (m/s)")
         a.set_ylabel(r"$e$")
         err = e_l - e_x
-        b.hist(err * 1e3, bins=60, color="#56B4E9")
+        b.hist(err * 1e3, bins=60, color=style_for("lammps")["color"])
         b.axvline(-1.0, color="#7F7F7F", ls=":", lw=0.8)
         b.axvline(1.0, color="#7F7F7F", ls=":", lw=0.8, label=r"$\pm 10^{-3}$ (the table's promise)")
         b.set_xlabel(r"$(e_{\rm LAMMPS} - e_{\rm exact}) \times 10^3$")

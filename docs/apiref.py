@@ -15,7 +15,7 @@ SECTIONS = {
         "Zener's equation (10) in the paper's notation: a summary of one impact, its history, "
         "the inverse (the lambda giving a restitution, a loss or a contact time) and the errors "
         "a model may raise.",
-        ["summary", "history", "lam_for", "Summary", "History", "MODELS",
+        ["summary", "history", "lam_from_summary", "Summary", "History", "MODELS",
          "FieldUnavailableError"]),
     "Models side by side": (
         "Every model against the exact solution, and the cheapest model that meets an accuracy.",
@@ -28,7 +28,7 @@ SECTIONS = {
         "The grain reading of Zener's equation (DEM codes): lambda of a grain pair, the "
         "dissipative constant or plate thickness that gives a restitution, and the dissipative "
         "constant fitted to measured restitution data.",
-        ["viscoelastic_lambda", "grain_impact", "GrainImpact", "dissipation_for",
+        ["lam_from_dissipation", "grain_impact", "GrainImpact", "dissipation_for",
          "thickness_for", "fit_dissipation", "DissipationFit"]),
     "Stress waves": (
         "Hunter's and Reed's stress-wave loss of a sphere on an elastic half-space.",

@@ -20,16 +20,17 @@ UNITS = {
     "speed": {"m/s": 1.0, "cm/s": 1e-2, "mm/s": 1e-3, "km/h": 1.0 / 3.6},
     "pressure": {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9},
     "density": {"kg/m^3": 1.0, "kg/m3": 1.0, "g/cm^3": 1e3, "g/cm3": 1e3},
+    "time": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "ns": 1e-9},
 }
 
 #: One example per kind, for messages.
 EXAMPLES = {"length": "1mm or 0.001m", "speed": "3m/s or 300cm/s", "pressure": "210GPa or 250MPa",
-            "density": "7850kg/m^3 or 7.85g/cm^3"}
+            "density": "7850kg/m^3 or 7.85g/cm^3", "time": "25us or 2.5e-5s"}
 
 #: Ranges (SI) outside which a value is taken for a slip, not a scene: what the scaling and the
 #: solvers are meant for, with wide margins.
 PLAUSIBLE = {"length": (1e-9, 1e3), "speed": (1e-6, 1e4), "pressure": (1e3, 1e13),
-             "density": (1.0, 1e5)}
+             "density": (1.0, 1e5), "time": (1e-12, 1e3)}
 
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?inf|nan)\s*(.*?)\s*$",
                      re.IGNORECASE)
@@ -43,7 +44,7 @@ def parse_quantity(text: str | float, kind: str, field: str | None = None) -> fl
     text : str or float
         E.g. ``"1mm"``, ``"0.5 mm"``, ``"1m/s"``, ``"73 GPa"``, ``"2500 kg/m^3"``, or a number
         (taken in SI units). A string without a unit is refused.
-    kind : {"length", "speed", "pressure", "density"}
+    kind : {"length", "speed", "pressure", "density", "time"}
     field : str, optional
         Name used in error messages.
 
@@ -95,7 +96,7 @@ def si_value(value: float | str, kind: str, field: str, *, positive: bool = True
     ----------
     value : float or str
         E.g. ``0.0025`` or ``"2.5 mm"``.
-    kind : {"length", "speed", "pressure", "density"}
+    kind : {"length", "speed", "pressure", "density", "time"}
     field : str
         Name used in error messages (e.g. ``"radius"`` or ``"--radius"``).
     positive : bool

@@ -47,7 +47,7 @@ MODULES = {
                                "(``zener-sym table``)."),
 }
 
-#: Generated kernels (``generated/``, emitted by ``zener-sym generate``; never edited by hand).
+#: Generated kernels (``generated/``, emitted by ``zener-sym regen kernels``; never edited by hand).
 GENERATED = ["ham0", "ham1"]
 
 #: Abbreviations after which the one-line summaries of the reference's tables (autosummary's
@@ -109,8 +109,8 @@ def render(package) -> str:
         sub = __import__(mod, fromlist=["__all__"])
         out += [f"   {n}" for n in sub.__all__] + [""]
     out += [_rule("Generated kernels (``zener_sym.generated``)", "-"),
-            "Emitted from the SymPy derivation by ``zener-sym generate`` (do not edit; "
-            "``zener-sym generate --check`` fails when stale): the printed formulas only, each "
+            "Emitted from the SymPy derivation by ``zener-sym regen kernels`` (do not edit; "
+            "``zener-sym regen --check kernels`` fails when stale): the printed formulas only, each "
             "function taking the math namespace ``xp`` first (``zener_sym.ham.xp.NUMPY`` or "
             "``MPMATH``). The checked runtime around them (input checks, roots, integrals, "
             "precision) is ``zener_sym.ham.runtime_numpy`` and ``runtime_mpmath``; the models "

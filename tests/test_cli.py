@@ -148,6 +148,20 @@ def test_the_older_commands_say_which_regen_call_replaces_them(argv, monkeypatch
                           "instead"), err
 
 
+def test_the_readme_command_table_is_the_help(capsys):
+    """README's command table lists the commands --help lists, no hidden one."""
+    import re
+
+    from conftest import ROOT
+
+    assert cli.main(["--help"]) == 0
+    listed = set(re.findall(r"^    ([a-z][a-z0-9-]*)", capsys.readouterr().out, re.MULTILINE))
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    table = readme.split("## Command line", 1)[1].split("\n\n", 2)[2].split("\n\n", 1)[0]
+    rows = set(re.findall(r"^\| `([a-z][a-z0-9-]*)", table, re.MULTILINE))
+    assert rows == listed
+
+
 def test_an_older_command_still_works(capsys):
     """ham1-table --check (a second's rebuild) on the committed table: 0, as regen gives."""
     assert cli.main(["ham1-table", "--check"]) == 0

@@ -404,38 +404,9 @@ def lam_from_summary(e: RealArrayLike | None = None, xi: RealArrayLike | None = 
 
 def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
             tau_d: RealArrayLike | None = None, contact_end: str = "delta") -> float | FloatArray:
-    """Deprecated name of :func:`lam_from_summary` (it warns, then calls it).
-
-    Parameters
-    ----------
-    e, xi, tau_d : float or array_like, optional
-        As :func:`lam_from_summary`.
-    contact_end : {"delta", "force"}
-        As :func:`lam_from_summary`.
-
-    Returns
-    -------
-    float or numpy.ndarray
-        As :func:`lam_from_summary`.
-
-    Raises
-    ------
-    ValueError
-        As :func:`lam_from_summary`.
-
-    Warns
-    -----
-    DeprecationWarning
-        Always: the name will be removed in the next release.
-
-    Examples
-    --------
-    >>> import warnings, zener_sym as zs
-    >>> with warnings.catch_warnings():
-    ...     warnings.simplefilter("ignore", DeprecationWarning)
-    ...     round(zs.lam_for(e=0.5), 6)
-    0.417662
-    """
+    """Deprecated name of :func:`lam_from_summary`, kept for one release: it issues a
+    ``DeprecationWarning``, then returns what :func:`lam_from_summary` returns for the same
+    arguments."""
     warnings.warn("lam_for is deprecated: use lam_from_summary (lambda from e, xi or tau_d; "
                   "lam_from_dissipation is lambda from the grains' dissipative constant A)",
                   DeprecationWarning, stacklevel=2)

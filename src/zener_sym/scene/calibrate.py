@@ -692,8 +692,8 @@ def fit_dissipation(sphere: Material | str, radius: float | str, mass: float, *,
     Warns
     -----
     DeprecationWarning
-        For the old call form ``fit_dissipation(v0, e, R1, m1, material1, ...)``, which still
-        works for one release (:mod:`zener_sym.scene.legacy`).
+        When called as ``fit_dissipation(v0, e, R1, m1, material1, ...)``: translated and fitted
+        all the same, until the next release drops that form.
 
     Examples
     --------

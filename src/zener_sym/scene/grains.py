@@ -132,31 +132,8 @@ def lam_from_dissipation(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayL
 
 def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
                         v0: RealArrayLike) -> float | FloatArray:
-    """Deprecated name of :func:`lam_from_dissipation` (it warns, then calls it).
-
-    Parameters
-    ----------
-    A, rho, m_eff, v0 : float or array_like
-        As :func:`lam_from_dissipation`.
-
-    Returns
-    -------
-    float or numpy.ndarray
-        As :func:`lam_from_dissipation`.
-
-    Warns
-    -----
-    DeprecationWarning
-        Always: the name will be removed in the next release.
-
-    Examples
-    --------
-    >>> import warnings, zener_sym as zs
-    >>> with warnings.catch_warnings():
-    ...     warnings.simplefilter("ignore", DeprecationWarning)
-    ...     round(zs.viscoelastic_lambda(1e-6, 1e9, 1e-5, 1.0), 6)
-    0.398107
-    """
+    """The old name of :func:`lam_from_dissipation`, which said less about which lambda it gives:
+    warns (``DeprecationWarning``) and delegates, until the next release removes it."""
     warnings.warn("viscoelastic_lambda is deprecated: use lam_from_dissipation (lambda from the "
                   "dissipative constant A; lam_from_summary is lambda from e, xi or tau_d)",
                   DeprecationWarning, stacklevel=2)

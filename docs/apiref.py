@@ -110,8 +110,9 @@ def render(package) -> str:
         out += [f"   {n}" for n in sub.__all__] + [""]
     out += [_rule("Generated kernels (``zener_sym.generated``)", "-"),
             "Emitted from the SymPy derivation by ``zener-sym regen kernels`` (do not edit; "
-            "``zener-sym regen --check kernels`` fails when stale): the printed formulas only, each "
-            "function taking the math namespace ``xp`` first (``zener_sym.ham.xp.NUMPY`` or "
+            "``zener-sym regen --check kernels`` fails when stale): the printed formulas only, "
+            "each function taking the math namespace ``xp`` first "
+            "(``zener_sym.ham.xp.NUMPY`` or "
             "``MPMATH``). The checked runtime around them (input checks, roots, integrals, "
             "precision) is ``zener_sym.ham.runtime_numpy`` and ``runtime_mpmath``; the models "
             "call that. They are public for users who want the bare closed forms.\n",

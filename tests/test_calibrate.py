@@ -231,7 +231,8 @@ def test_a_fit_that_does_not_converge_says_so(monkeypatch):
 def test_fit_plot_draws_data_curve_and_residuals(tmp_path):
     pytest.importorskip("matplotlib")
     fit = zs.fit_dissipation(**GRAINS, v0=SPEEDS,
-                             e=_e(A_TRUE, SPEEDS, "delta") + 0.003 * np.sin(SPEEDS), **WALL, sigma=0.003, contact_end="delta")
+                             e=_e(A_TRUE, SPEEDS, "delta") + 0.003 * np.sin(SPEEDS), **WALL,
+                             sigma=0.003, contact_end="delta")
     fig = fit.plot(tmp_path / "fit.png")
     assert (tmp_path / "fit.png").stat().st_size > 0
     top, bottom = fig.axes

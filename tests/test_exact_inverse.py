@@ -1,4 +1,5 @@
-"""The tables' derivative d(field)/d(lambda) and the inverse ``lam_from_summary`` against independent routes.
+"""The tables' derivative d(field)/d(lambda) and the inverse ``lam_from_summary`` against
+independent routes.
 
 References: Richardson-extrapolated central differences of mpmath solves (``exact.mp``, 20
 digits, so the differences lose nothing a float could see), the small-lambda series of e and

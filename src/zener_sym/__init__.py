@@ -29,11 +29,13 @@ __version__ = "0.2.0"
 #: Deprecated names, importable for one more release (each warns): not in ``__all__``.
 DEPRECATED = ("lam_for", "viscoelastic_lambda")
 
-__all__ = ["summary", "history", "lam_from_summary", "Summary", "History", "MODELS", "FieldUnavailableError",
+__all__ = ["summary", "history", "lam_from_summary", "Summary", "History", "MODELS",
+           "FieldUnavailableError",
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
            "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
            "compare", "Comparison", "__version__",
-           "lam_from_dissipation", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss",
+           "lam_from_dissipation", "grain_impact", "GrainImpact", "stress_wave_k",
+           "stress_wave_loss",
            "dissipation_for", "thickness_for", "fit_dissipation", "DissipationFit"]
 
 

@@ -361,7 +361,8 @@ def lam_from_summary(e: RealArrayLike | None = None, xi: RealArrayLike | None = 
     ``e``, ``xi``, ``tau_d``. Solved on the exact model's Chebyshev tables (0 <= lambda <= 1000)
     by a safeguarded Newton iteration whose derivative is the tables' own
     (``zener_sym.exact.table.summary_derivative``), all values at once:
-    ``summary(lam_from_summary(e=x)).e`` is within 1e-12 relative of x (the tables' accuracy against the true solution is 1e-11).
+    ``summary(lam_from_summary(e=x)).e`` is within 1e-12 relative of x (the tables' accuracy
+    against the true solution is 1e-11).
 
     Parameters
     ----------

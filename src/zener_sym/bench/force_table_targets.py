@@ -1,7 +1,7 @@
 """Speed targets of the force-free end's tables and the inverse (issue 24), measured side by
 side in one run: the force-free end against the plate end on the same grids, and the lookup
-table and ``lam_from_summary`` against a one-second budget (the issue's "well under a second", read as
-at most half of it)."""
+table and ``lam_from_summary`` against a one-second budget (the issue's "well under a second",
+read as at most half of it)."""
 from __future__ import annotations
 
 from typing import Any

@@ -15,7 +15,7 @@ SECTIONS = {
         "Zener's equation (10) in the paper's notation: a summary of one impact, its history, "
         "the inverse (the lambda giving a restitution, a loss or a contact time) and the errors "
         "a model may raise.",
-        ["summary", "history", "lam_for", "Summary", "History", "MODELS",
+        ["summary", "history", "lam_from_summary", "Summary", "History", "MODELS",
          "FieldUnavailableError"]),
     "Models side by side": (
         "Every model against the exact solution, and the cheapest model that meets an accuracy.",
@@ -28,7 +28,7 @@ SECTIONS = {
         "The grain reading of Zener's equation (DEM codes): lambda of a grain pair, the "
         "dissipative constant or plate thickness that gives a restitution, and the dissipative "
         "constant fitted to measured restitution data.",
-        ["viscoelastic_lambda", "grain_impact", "GrainImpact", "dissipation_for",
+        ["lam_from_dissipation", "grain_impact", "GrainImpact", "dissipation_for",
          "thickness_for", "fit_dissipation", "DissipationFit"]),
     "Stress waves": (
         "Hunter's and Reed's stress-wave loss of a sphere on an elastic half-space.",
@@ -47,7 +47,7 @@ MODULES = {
                                "(``zener-sym table``)."),
 }
 
-#: Generated kernels (``generated/``, emitted by ``zener-sym generate``; never edited by hand).
+#: Generated kernels (``generated/``, emitted by ``zener-sym regen kernels``; never edited by hand).
 GENERATED = ["ham0", "ham1"]
 
 #: Abbreviations after which the one-line summaries of the reference's tables (autosummary's
@@ -109,9 +109,10 @@ def render(package) -> str:
         sub = __import__(mod, fromlist=["__all__"])
         out += [f"   {n}" for n in sub.__all__] + [""]
     out += [_rule("Generated kernels (``zener_sym.generated``)", "-"),
-            "Emitted from the SymPy derivation by ``zener-sym generate`` (do not edit; "
-            "``zener-sym generate --check`` fails when stale): the printed formulas only, each "
-            "function taking the math namespace ``xp`` first (``zener_sym.ham.xp.NUMPY`` or "
+            "Emitted from the SymPy derivation by ``zener-sym regen kernels`` (do not edit; "
+            "``zener-sym regen --check kernels`` fails when stale): the printed formulas only, "
+            "each function taking the math namespace ``xp`` first "
+            "(``zener_sym.ham.xp.NUMPY`` or "
             "``MPMATH``). The checked runtime around them (input checks, roots, integrals, "
             "precision) is ``zener_sym.ham.runtime_numpy`` and ``runtime_mpmath``; the models "
             "call that. They are public for users who want the bare closed forms.\n",

@@ -4,7 +4,7 @@ A lookup table for a DEM code
 
 A discrete-element code that integrates viscoelastic grains needs, for every collision, the
 coefficient of restitution e and the contact time. With lambda = A (rho/m_eff)^(2/5) v0^(1/5)
-(:func:`zener_sym.viscoelastic_lambda`) it can interpolate both in a table over lambda.
+(:func:`zener_sym.lam_from_dissipation`) it can interpolate both in a table over lambda.
 :func:`zener_sym.scene.lookup.lookup_table` computes it; ``contact_end="force"`` ends the contact
 where the viscoelastic force vanishes, as between grains (docs/viscoelastic.md). The command line
 ``zener-sym table --quantity e,tau_d --lam 0:5:1001 --contact-end force --csv`` writes the same

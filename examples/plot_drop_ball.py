@@ -12,7 +12,7 @@ import zener_sym as zs
 from zener_sym.plot import style
 
 scene = zs.Scene("steel", "glass", radius="2.5 mm", thickness="2 mm", drop_height="0.5 m")
-r = scene.summary()
+r = scene.result()
 print(f"lambda = {r.lam:.4g}, model {r.model!r}")
 print(f"e = {r.e:.4f}, contact {r.contact_duration_s * 1e6:.2f} us, peak force {r.max_force_N:.1f} N")
 

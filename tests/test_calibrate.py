@@ -19,7 +19,7 @@ from zener_sym.scene import calibrate as cal
 from zener_sym.scene.grains import grain_contact
 
 ROOT = Path(__file__).resolve().parents[1]
-GRAINS = dict(R1="1 mm", m1=1e-5, material1="glass")
+GRAINS = dict(sphere="glass", radius="1 mm", mass=1e-5)
 WALL = dict(wall="steel")
 A_TRUE = 3e-7
 SPEEDS = np.array([0.2, 0.5, 1.0, 2.0, 4.0, 8.0, 12.0, 20.0])
@@ -27,7 +27,7 @@ SPEEDS = np.array([0.2, 0.5, 1.0, 2.0, 4.0, 8.0, 12.0, 20.0])
 
 def _lam(A, v0):
     c = grain_contact(**GRAINS, **WALL)
-    return zs.viscoelastic_lambda(A, c.rho, c.m_eff, v0)
+    return zs.lam_from_dissipation(A, c.rho, c.m_eff, v0)
 
 
 def _e(A, v0, contact_end):
@@ -40,7 +40,7 @@ def _e(A, v0, contact_end):
 @pytest.mark.parametrize("contact_end", ["force", "delta"])
 def test_dissipation_for_gives_back_the_measured_e(contact_end):
     for e, v0 in ((0.9, 0.3), (0.5, 2.0), (0.2, 5.0)):
-        A = zs.dissipation_for(e, v0, **GRAINS, **WALL, contact_end=contact_end)
+        A = zs.dissipation_for(**GRAINS, v0=v0, e=e, **WALL, contact_end=contact_end)
         r = zs.grain_impact(**GRAINS, A=A, v0=v0, **WALL, contact_end=contact_end)
         assert r.e == pytest.approx(e, rel=1e-11)
 
@@ -48,13 +48,14 @@ def test_dissipation_for_gives_back_the_measured_e(contact_end):
 def test_dissipation_for_two_spheres_and_arrays():
     e = np.array([0.95, 0.8, 0.6])
     v0 = np.array([0.1, 1.0, 3.0])
-    A = zs.dissipation_for(e, v0, "2 mm", 3e-5, "steel", R2="1 mm", m2=1e-5, material2="glass")
+    A = zs.dissipation_for("steel", "2 mm", 3e-5, v0=v0, e=e, sphere2="glass", radius2="1 mm",
+                           mass2=1e-5)
     assert A.shape == (3,)
     for a, x, v in zip(A, e, v0):
-        r = zs.grain_impact("2 mm", 3e-5, "steel", A=a, v0=v, R2="1 mm", m2=1e-5,
-                            material2="glass")
+        r = zs.grain_impact("steel", "2 mm", 3e-5, A=a, v0=v, sphere2="glass", radius2="1 mm",
+                            mass2=1e-5)
         assert r.e == pytest.approx(x, rel=1e-11)
-    assert zs.dissipation_for(1.0, 1.0, **GRAINS) == 0.0
+    assert zs.dissipation_for(**GRAINS, v0=1.0, e=1.0) == 0.0
 
 
 @pytest.mark.parametrize("e,v0,message", [
@@ -66,7 +67,7 @@ def test_dissipation_for_two_spheres_and_arrays():
 ])
 def test_dissipation_for_refuses(e, v0, message):
     with pytest.raises(ValueError) as info:
-        zs.dissipation_for(e, v0, **GRAINS)
+        zs.dissipation_for(**GRAINS, v0=v0, e=e)
     assert message in str(info.value)
 
 
@@ -74,7 +75,7 @@ def test_dissipation_for_refuses(e, v0, message):
 def test_dissipation_for_refuses_an_e_no_lambda_reaches(contact_end):
     floor = float(zs.summary(1000.0, model="exact", contact_end=contact_end).e)
     with pytest.raises(ValueError) as info:
-        zs.dissipation_for(floor / 2, 1.0, **GRAINS, contact_end=contact_end)
+        zs.dissipation_for(**GRAINS, v0=1.0, e=floor / 2, contact_end=contact_end)
     assert "1000" in str(info.value)
 
 
@@ -90,6 +91,46 @@ def test_thickness_for_gives_the_plate_that_gives_e():
         zs.thickness_for(0.5, 0.5)
 
 
+@pytest.mark.parametrize("t_us", [10.0, 12.0, 25.0, 60.0])
+def test_thickness_for_a_contact_time_gives_that_duration(t_us):
+    """The thickness for a measured contact duration, forward-solved by the integrator
+    (backend="scipy", not the tables the inverse uses): its contact lasts that long."""
+    sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+    H = zs.thickness_for(sc, contact_time=f"{t_us} us")
+    assert H == zs.thickness_for(sc, contact_time=t_us * 1e-6)
+    sc2 = zs.Scene("steel", "glass", radius="1 mm", thickness=H, v0="1 m/s")
+    r = sc2.result(model="exact", backend="scipy", rtol=1e-12, warn=False)
+    assert r.contact_duration_s == pytest.approx(t_us * 1e-6, rel=1e-9)
+
+
+def test_thickness_for_a_contact_time_grows_with_the_duration():
+    sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+    H = [zs.thickness_for(sc, contact_time=t * 1e-6) for t in (10.0, 12.0, 25.0)]
+    assert H[0] > H[1] > H[2]  # a longer contact needs a thinner, more compliant plate
+
+
+def test_thickness_for_refuses_durations_no_plate_gives():
+    sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+    hertz = sc.result(model="hertz", warn=False).contact_duration_s  # rigid half-space
+    with pytest.raises(ValueError, match="infinitely thick") as info:
+        zs.thickness_for(sc, contact_time=0.999 * hertz)
+    assert "contact_time <=" in str(info.value)
+    longest = sc.T * float(zs.summary(1000.0).tau_d)
+    with pytest.raises(ValueError, match="not reachable"):
+        zs.thickness_for(sc, contact_time=1.01 * longest)
+    assert zs.thickness_for(sc, contact_time=0.99 * longest) > 0
+    with pytest.raises(ValueError, match="exactly one of e"):
+        zs.thickness_for(sc, 0.5, contact_time="12 us")
+    with pytest.raises(ValueError, match="exactly one of e"):
+        zs.thickness_for(sc)
+    with pytest.raises(ValueError, match="unknown time unit"):
+        zs.thickness_for(sc, contact_time="12 uss")
+    with pytest.raises(ValueError, match="give a unit"):
+        zs.thickness_for(sc, contact_time="12")
+    with pytest.raises(TypeError):
+        zs.thickness_for(sc, None, 12e-6)  # contact_time is keyword-only
+
+
 # -- the fit ----------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("contact_end", ["delta", "force"])
@@ -98,7 +139,7 @@ def test_fit_recovers_a_known_A_without_noise(contact_end):
     speeds = SPEEDS
     e = zs.summary(_lam(A_TRUE, speeds), model="exact", contact_end=contact_end,
                    backend="scipy").e
-    fit = zs.fit_dissipation(speeds, e, **GRAINS, **WALL, contact_end=contact_end)
+    fit = zs.fit_dissipation(**GRAINS, v0=speeds, e=e, **WALL, contact_end=contact_end)
     assert fit.A == pytest.approx(A_TRUE, rel=1e-9)
     assert np.max(np.abs(fit.residuals)) < 1e-10
     assert np.allclose(fit.lam, _lam(A_TRUE, speeds), rtol=1e-9)
@@ -112,7 +153,7 @@ def test_the_95_interval_covers_the_true_A_in_at_least_90_of_100_noisy_draws(con
     covered = 0
     for _ in range(100):
         e = e0 + rng.normal(0.0, 0.01, SPEEDS.size)
-        fit = zs.fit_dissipation(SPEEDS, e, **GRAINS, **WALL, contact_end=contact_end)
+        fit = zs.fit_dissipation(**GRAINS, v0=SPEEDS, e=e, **WALL, contact_end=contact_end)
         covered += fit.A_ci[0] <= A_TRUE <= fit.A_ci[1]
     assert covered >= 90, covered
 
@@ -123,7 +164,7 @@ def test_given_sigma_weights_the_points_and_sets_the_interval():
     e0 = _e(A_TRUE, SPEEDS, "delta")
     covered = 0
     for _ in range(100):
-        fit = zs.fit_dissipation(SPEEDS, e0 + rng.normal(0.0, 0.01, SPEEDS.size), **GRAINS,
+        fit = zs.fit_dissipation(**GRAINS, v0=SPEEDS, e=e0 + rng.normal(0.0, 0.01, SPEEDS.size),
                                  **WALL, sigma=sigma, contact_end="delta")
         covered += fit.A_ci[0] <= A_TRUE <= fit.A_ci[1]
     assert covered >= 90, covered
@@ -137,7 +178,7 @@ def test_given_sigma_weights_the_points_and_sets_the_interval():
 
 def test_predict_matches_the_forward_path():
     e = _e(A_TRUE, SPEEDS, "force")[:3]
-    fit = zs.fit_dissipation(SPEEDS[:3], e, **GRAINS, **WALL)
+    fit = zs.fit_dissipation(**GRAINS, v0=SPEEDS[:3], e=e, **WALL)
     p = fit.predict(3.0)
     r = zs.grain_impact(**GRAINS, A=fit.A, v0=3.0, **WALL)
     assert p["e"] == pytest.approx(r.e, rel=1e-12)
@@ -160,13 +201,13 @@ def test_predict_matches_the_forward_path():
 ])
 def test_fit_refuses_what_it_cannot_fit(v0, e, kw, message):
     with pytest.raises(ValueError) as info:
-        zs.fit_dissipation(v0, e, **GRAINS, **WALL, contact_end="delta", **kw)
+        zs.fit_dissipation(**GRAINS, v0=v0, e=e, **WALL, contact_end="delta", **kw)
     assert message in str(info.value)
 
 
 def test_one_point_with_sigma_is_the_inverse():
-    fit = zs.fit_dissipation([2.0], [0.6], **GRAINS, **WALL, sigma=0.01, contact_end="delta")
-    A = zs.dissipation_for(0.6, 2.0, **GRAINS, **WALL, contact_end="delta")
+    fit = zs.fit_dissipation(**GRAINS, v0=[2.0], e=[0.6], **WALL, sigma=0.01, contact_end="delta")
+    A = zs.dissipation_for(**GRAINS, v0=2.0, e=0.6, **WALL, contact_end="delta")
     assert fit.A == pytest.approx(A, rel=1e-9)
 
 
@@ -183,14 +224,15 @@ def test_a_fit_that_does_not_converge_says_so(monkeypatch):
 
     monkeypatch.setattr(scipy.optimize, "least_squares", stalled)
     with pytest.raises(ValueError, match="did not converge"):
-        zs.fit_dissipation(SPEEDS, _e(A_TRUE, SPEEDS, "delta") * 0.99, **GRAINS, **WALL,
+        zs.fit_dissipation(**GRAINS, v0=SPEEDS, e=_e(A_TRUE, SPEEDS, "delta") * 0.99, **WALL,
                            contact_end="delta")
 
 
 def test_fit_plot_draws_data_curve_and_residuals(tmp_path):
     pytest.importorskip("matplotlib")
-    fit = zs.fit_dissipation(SPEEDS, _e(A_TRUE, SPEEDS, "delta") + 0.003 * np.sin(SPEEDS),
-                             **GRAINS, **WALL, sigma=0.003, contact_end="delta")
+    fit = zs.fit_dissipation(**GRAINS, v0=SPEEDS,
+                             e=_e(A_TRUE, SPEEDS, "delta") + 0.003 * np.sin(SPEEDS), **WALL,
+                             sigma=0.003, contact_end="delta")
     fig = fit.plot(tmp_path / "fit.png")
     assert (tmp_path / "fit.png").stat().st_size > 0
     top, bottom = fig.axes

@@ -42,7 +42,7 @@ def test_ham_bound_warning_issued_and_listed():
     assert sc.lam > checks.HAM_LAMBDA_BOUND
     assert "ham-bound" in {c for c, _ in sc.warnings}
     with pytest.warns(zs.ZenerWarning, match=r"\[ham-bound\]"):
-        res = zs.summary(sc, rtol=1e-3)
+        res = sc.result(rtol=1e-3)
     assert "ham-bound" in _codes(res)
     assert any(r[0] == "WARNING ham-bound" for r in res.table())
     assert res.model == "exact"

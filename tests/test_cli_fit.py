@@ -14,7 +14,7 @@ SPEEDS = np.array([20.0, 50.0, 100.0, 200.0, 400.0])  # cm/s
 
 
 def _csv(tmp_path, header="v0 [cm/s],e", reverse_e=False):
-    e = [zs.grain_impact("1 mm", 1e-5, "glass", A=A_TRUE, v0=float(v) / 100.0, wall="steel",
+    e = [zs.grain_impact("glass", "1 mm", 1e-5, A=A_TRUE, v0=float(v) / 100.0, wall="steel",
                          contact_end="delta").e for v in SPEEDS]
     if reverse_e:  # e rising with speed
         e = e[::-1]
@@ -78,6 +78,6 @@ def test_fit_two_spheres_matches_the_python_fit(tmp_path, capsys):
     assert cli.main(argv) == 0
     A_cli = float(re.search(r"A = (\S+) s", capsys.readouterr().out).group(1))
     m = zs.scene.calibrate.read_measurements(path)
-    fit = zs.fit_dissipation(m.v0, m.e, "1 mm", 1e-5, "glass", R2="2 mm", m2=5e-5,
-                             material2="steel", contact_end="delta")
+    fit = zs.fit_dissipation("glass", "1 mm", 1e-5, v0=m.v0, e=m.e, sphere2="steel",
+                             radius2="2 mm", mass2=5e-5, contact_end="delta")
     assert A_cli == pytest.approx(fit.A, rel=1e-5)

@@ -36,9 +36,9 @@ def test_default_models_are_those_accepting_lambda():
 def test_scene_comparison_uses_si_fields():
     sc = zs.Scene("steel", "glass", radius="2.5 mm", thickness="2 mm", drop_height="0.5 m")
     c = zs.compare(sc, models=["ham1"], quantities=["contact_duration_s", "e"])
-    ex = sc.summary(model="exact")
+    ex = sc.result(model="exact")
     assert c["exact"].contact_duration_s == ex.contact_duration_s
-    h = sc.summary(model="ham1")
+    h = sc.result(model="ham1")
     assert c["ham1"].errors["e"] == pytest.approx(abs(h.e / ex.e - 1), rel=1e-12)
     assert "contact_duration_s [s]" in c.to_markdown()
 

@@ -1,4 +1,5 @@
-"""The tables' derivative d(field)/d(lambda) and the inverse ``lam_for`` against independent routes.
+"""The tables' derivative d(field)/d(lambda) and the inverse ``lam_from_summary`` against
+independent routes.
 
 References: Richardson-extrapolated central differences of mpmath solves (``exact.mp``, 20
 digits, so the differences lose nothing a float could see), the small-lambda series of e and
@@ -87,40 +88,40 @@ def test_round_trip_e_within_1e12():
         np.linspace(0.7, 0.72, 2001),  # around xi = 1/2, where the tables change their e form
         [e_min, 1.0],
     ])
-    lam = zs.lam_for(e=x)
+    lam = zs.lam_from_summary(e=x)
     assert lam.shape == x.shape and np.all((lam >= 0) & (lam <= 1000))
     e = zs.summary(lam).e
     rel = np.abs(e - x) / x
     assert rel.max() <= 1e-12, (x[rel.argmax()], rel.max())
-    assert zs.lam_for(e=1.0) == 0.0
+    assert zs.lam_from_summary(e=1.0) == 0.0
     # the piece edges of the table in lambda map onto themselves
     edges = np.array([1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0])
-    np.testing.assert_allclose(zs.lam_for(e=zs.summary(edges).e), edges, rtol=1e-9)
+    np.testing.assert_allclose(zs.lam_from_summary(e=zs.summary(edges).e), edges, rtol=1e-9)
 
 
 def test_round_trip_xi_and_tau_d():
     x = np.concatenate([[0.0], np.geomspace(1e-18, 0.999999, 3000)])
-    lam = zs.lam_for(xi=x)
+    lam = zs.lam_from_summary(xi=x)
     xi = zs.summary(lam).xi
     assert np.all(np.abs(xi - x) <= 1e-12 * x)
     assert lam[0] == 0.0
     lo, hi = inverse.reachable("tau_d")
     t = np.linspace(lo, hi, 3001)
-    lam = zs.lam_for(tau_d=t)
+    lam = zs.lam_from_summary(tau_d=t)
     np.testing.assert_allclose(zs.summary(lam).tau_d, t, rtol=1e-12)
 
 
 def test_plate_tau_d_monotone_over_the_table():
     # the sign of tau_d' on a fine grid (from the independent forward map) agrees with the
-    # branch lam_for inverts: all of [0, 1000], increasing
+    # branch lam_from_summary inverts: all of [0, 1000], increasing
     lam = np.linspace(0.0, 1000.0, 100001)
     assert np.all(np.diff(table.summary(lam)["tau_d"]) > 0)
     assert inverse.tau_d_branch("delta") == (0.0, 1000.0, 1)
 
 
-def test_lam_for_shapes_and_scalar():
-    assert isinstance(zs.lam_for(e=0.5), float)
-    out = zs.lam_for(e=[[0.5, 0.6], [0.7, 0.8]])
+def test_lam_from_summary_shapes_and_scalar():
+    assert isinstance(zs.lam_from_summary(e=0.5), float)
+    out = zs.lam_from_summary(e=[[0.5, 0.6], [0.7, 0.8]])
     assert out.shape == (2, 2)
     assert np.all(np.diff(out.ravel()) < 0)  # e falls with lambda
 
@@ -140,6 +141,6 @@ def test_lam_for_shapes_and_scalar():
     ({"tau_d": 0.0}, "> 0"),
     ({"e": 0.5, "contact_end": "plate"}, "unknown contact_end"),
 ])
-def test_lam_for_bad_input(kw, match):
+def test_lam_from_summary_bad_input(kw, match):
     with pytest.raises(ValueError, match=match):
-        zs.lam_for(**kw)
+        zs.lam_from_summary(**kw)

@@ -14,7 +14,7 @@ def res():
     sc = zs.Scene("steel", "aluminium", 1e-3, 1e-3, 2.0)
     with warnings.catch_warnings():
         warnings.simplefilter("error", zs.ZenerWarning)  # a plain scene raises none
-        return zs.summary(sc, rtol=1e-3)
+        return sc.result(rtol=1e-3)
 
 
 def test_identities(res):
@@ -48,9 +48,9 @@ def test_histories(res):
         res.history([-1.0])
 
 
-def test_summary_with_explicit_model_and_lambda_path_unchanged():
+def test_result_with_explicit_model_and_lambda_path_unchanged():
     sc = zs.Scene("glass", "glass", 1e-3, 1e-3, 1.0)
-    r = zs.summary(sc, model="exact")
+    r = sc.result(model="exact")
     assert r.model == "exact" and "requested" in r.reason
     s = zs.summary(sc.lam)  # the lambda path still gives the dimensionless Summary
     assert r.contact_duration_s == pytest.approx(s.tau_d * sc.T, rel=1e-15)
@@ -112,8 +112,8 @@ def test_model_without_some_fields(monkeypatch):
     monkeypatch.setitem(REGISTRY, "partial", partial)
     sc = zs.Scene("steel", "glass", 1e-3, 2e-3, 1.0)
     with pytest.warns(zs.ZenerWarning, match="not-checked"):
-        r = zs.summary(sc, model="partial")
-    ex = zs.summary(sc, model="exact")
+        r = sc.result(model="partial")
+    ex = sc.result(model="exact")
     assert r.e is None and r.xi is None and r.final_deflection_m is None
     assert r.contact_duration_s == pytest.approx(ex.contact_duration_s, rel=1e-15)
     assert "n/a (not given by model 'partial')" in str(r)

@@ -46,7 +46,7 @@ def test_drop_height_is_free_fall():
 
 
 def test_scene_result_says_where_old_names_went():
-    r = zs.Scene("steel", "glass", radius="1mm", thickness="2mm", v0=1.0).summary()
+    r = zs.Scene("steel", "glass", radius="1mm", thickness="2mm", v0=1.0).result()
     with pytest.raises(AttributeError, match="restitution.* is now 'e'"):
         r.restitution
     assert r.e == r.summary.e and r.xi == r.summary.xi

@@ -92,8 +92,8 @@ def test_bad_lambda(fakes):
 def test_scene_summary_uses_the_selection(fakes, monkeypatch):
     monkeypatch.setattr(envelopes, "load", lambda where=None: fakes)
     sc = zs.Scene("table1-sphere", "table1-plate", 0.9e-3, 0.5e-3, 1.0)  # lambda 0.163
-    loose = zs.summary(sc, rtol=1e-2)
-    tight = zs.summary(sc, rtol=1e-5)
+    loose = sc.result(rtol=1e-2)
+    tight = sc.result(rtol=1e-5)
     assert (loose.model, tight.model) == ("cheap", "mid")
     assert "cheapest qualifying" in loose.reason
     # the perturbed model's error shows up in the dimensional result as constructed

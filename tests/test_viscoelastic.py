@@ -115,18 +115,18 @@ def test_contact_end_bad_input():
         zs.summary(1500.0, model="exact", contact_end="force")
 
 
-def test_viscoelastic_lambda_closed_form_and_bad_input():
+def test_lam_from_dissipation_closed_form_and_bad_input():
     # lambda = A/T with T from the mapping, computed here from its definition
     A, rho, m, v = 2e-7, 3.1e8, 4e-6, 2.5
     T = (m / rho) ** 0.4 * v ** -0.2
-    assert abs(zs.viscoelastic_lambda(A, rho, m, v) - A / T) < 1e-15 * A / T
-    arr = zs.viscoelastic_lambda([A, 2 * A], rho, m, v)
+    assert abs(zs.lam_from_dissipation(A, rho, m, v) - A / T) < 1e-15 * A / T
+    arr = zs.lam_from_dissipation([A, 2 * A], rho, m, v)
     assert arr.shape == (2,) and abs(arr[1] / arr[0] - 2) < 1e-15
     for kw in ({"A": 0.0}, {"rho": -1.0}, {"m_eff": float("inf")}, {"v0": float("nan")}):
         args = {"A": A, "rho": rho, "m_eff": m, "v0": v, **kw}
         name = next(iter(kw))
         with pytest.raises(ValueError, match=f"^{name} .*allowed: 0 < {name}"):
-            zs.viscoelastic_lambda(**args)
+            zs.lam_from_dissipation(**args)
 
 
 def _si_integration(m, rho, A, v0, end):
@@ -164,7 +164,8 @@ def _si_integration(m, rho, A, v0, end):
 @pytest.mark.parametrize("end", ["force", "delta"])
 def test_grain_impact_against_si_integration(end):
     m1, m2 = 2e-5, 5e-5
-    r = zs.grain_impact(1e-3, m1, "glass", 3e-7, 2.0, R2=2e-3, m2=m2, material2="steel", contact_end=end)
+    r = zs.grain_impact("glass", 1e-3, m1, A=3e-7, v0=2.0, sphere2="steel", radius2=2e-3, mass2=m2,
+                        contact_end=end)
     assert r.contact_end == end and ("force" in r.criterion) == (end == "force")
     e, tc, Fm = _si_integration(r.m_eff, r.rho, 3e-7, 2.0, end)
     assert abs(r.e - e) < 1e-6 * e
@@ -179,19 +180,19 @@ def test_grain_impact_against_si_integration(end):
 
 
 def test_grain_impact_wall_and_bad_input():
-    rigid = zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0)
-    soft = zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, wall="glass")
+    rigid = zs.grain_impact("glass", 1e-3, 1e-5, A=1e-7, v0=1.0)
+    soft = zs.grain_impact("glass", 1e-3, 1e-5, A=1e-7, v0=1.0, wall="glass")
     assert rigid.E_star > soft.E_star and rigid.contact_duration_s < soft.contact_duration_s
     with pytest.raises(ValueError, match="A .*allowed: 0 < A"):
-        zs.grain_impact(1e-3, 1e-5, "glass", -1e-7, 1.0)
+        zs.grain_impact("glass", 1e-3, 1e-5, A=-1e-7, v0=1.0)
     with pytest.raises(ValueError, match="v0 .*allowed"):
-        zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, float("inf"))
+        zs.grain_impact("glass", 1e-3, 1e-5, A=1e-7, v0=float("inf"))
     with pytest.raises(ValueError, match="contact_end"):
-        zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, contact_end="zero")
+        zs.grain_impact("glass", 1e-3, 1e-5, A=1e-7, v0=1.0, contact_end="zero")
     with pytest.raises(ValueError, match="sphere 2 needs"):
-        zs.grain_impact(1e-3, 1e-5, "glass", 1e-7, 1.0, R2=1e-3)
+        zs.grain_impact("glass", 1e-3, 1e-5, A=1e-7, v0=1.0, radius2=1e-3)
     with pytest.raises(ValueError, match="exact model accepts 0 <= lambda <= 1000"):
-        zs.grain_impact(1e-3, 1e-5, "glass", 1.0, 1.0)
+        zs.grain_impact("glass", 1e-3, 1e-5, A=1.0, v0=1.0)
 
 
 def test_lookup_table_csv_round_trip_against_solvers(capsys):

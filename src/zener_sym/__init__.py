@@ -13,12 +13,12 @@ names.
 from __future__ import annotations
 
 from . import models as _models
-from .api import History, Summary, history, lam_for, summary
+from .api import History, Summary, history, lam_for, lam_from_summary, summary
 from .models import FieldUnavailableError
 from .scene.calibrate import DissipationFit, dissipation_for, fit_dissipation, thickness_for
 from .scene.checks import ZenerWarning
 from .scene.compare import Comparison, compare
-from .scene.grains import GrainImpact, grain_impact, viscoelastic_lambda
+from .scene.grains import GrainImpact, grain_impact, lam_from_dissipation, viscoelastic_lambda
 from .scene.materials import ALUMINIUM, GLASS, PRESETS, STEEL, TABLE1_PLATE, TABLE1_SPHERE, Material
 from .scene.scene import Scene, SceneResult
 from .scene.select import Selection, select_model
@@ -26,11 +26,16 @@ from .scene.stress_waves import stress_wave_k, stress_wave_loss
 
 __version__ = "0.2.0"
 
-__all__ = ["summary", "history", "lam_for", "Summary", "History", "MODELS", "FieldUnavailableError",
+#: Deprecated names, importable for one more release (each warns): not in ``__all__``.
+DEPRECATED = ("lam_for", "viscoelastic_lambda")
+
+__all__ = ["summary", "history", "lam_from_summary", "Summary", "History", "MODELS",
+           "FieldUnavailableError",
            "Material", "Scene", "SceneResult", "select_model", "Selection", "ZenerWarning",
            "STEEL", "GLASS", "ALUMINIUM", "TABLE1_SPHERE", "TABLE1_PLATE", "PRESETS",
            "compare", "Comparison", "__version__",
-           "viscoelastic_lambda", "grain_impact", "GrainImpact", "stress_wave_k", "stress_wave_loss",
+           "lam_from_dissipation", "grain_impact", "GrainImpact", "stress_wave_k",
+           "stress_wave_loss",
            "dissipation_for", "thickness_for", "fit_dissipation", "DissipationFit"]
 
 

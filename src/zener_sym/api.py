@@ -1,6 +1,7 @@
 """The uniform API: ``summary`` and ``history`` for every registered model."""
 from __future__ import annotations
 
+import warnings
 from collections.abc import Sequence
 from typing import Any, Protocol, TypeVar, cast, overload
 
@@ -12,17 +13,18 @@ from .exact.force_end import check_contact_end
 from .models import HISTORY_FIELDS, SUMMARY_FIELDS, Model, get_model
 from .typing import FloatArray, RealArrayLike
 
-__all__ = ["Summary", "History", "summary", "history", "lam_for"]
+__all__ = ["Summary", "History", "summary", "history", "lam_from_summary", "lam_for"]
 
 
 _R_co = TypeVar("_R_co", covariant=True)
 
 
 class SceneLike(Protocol[_R_co]):
-    """What :func:`summary` accepts instead of a lambda: an object that computes its own result
-    (``zener_sym.Scene``; this layer does not import the scene layer above it)."""
+    """What :func:`summary` still accepts instead of a lambda, deprecated: an object that
+    computes its own result (``zener_sym.Scene``, whose one route to its result is
+    ``Scene.result``; this layer does not import the scene layer above it)."""
 
-    def summary(self, model: str | None = None, **options: Any) -> _R_co: ...
+    def result(self, model: str | None = None, **options: Any) -> _R_co: ...
 
 
 class _Fields:
@@ -227,11 +229,10 @@ def summary(lam: RealArrayLike | SceneLike[Any], model: str | None = None,
 
     Parameters
     ----------
-    lam : float or array_like or Scene
+    lam : float or array_like
         Zener's inelasticity parameter lambda >= 0 (Eq. 11). An array gives array fields.
-        A ``zener_sym.Scene`` gives its dimensional ``SceneResult`` instead; then ``rtol``
-        (default 1e-3) and ``quantity`` (default "all") choose the cheapest model meeting the
-        accuracy (``select_model``) unless ``model`` is given.
+        (A ``zener_sym.Scene`` is still accepted, with a ``DeprecationWarning``: a scene's
+        dimensional result is ``Scene.result()``.)
     model : str
         One of ``zener_sym.MODELS`` (default "exact" for a lambda).
     **options
@@ -239,14 +240,18 @@ def summary(lam: RealArrayLike | SceneLike[Any], model: str | None = None,
 
     Returns
     -------
-    Summary or SceneResult
-        The dimensionless :class:`Summary` for a lambda; the scene's ``SceneResult`` for a
-        ``Scene``.
+    Summary
+        The dimensionless summary (for a deprecated ``Scene``, its ``SceneResult``).
 
     Raises
     ------
     ValueError
         For a bad lambda, an unknown model or option, or lambda outside the model's validity.
+
+    Warns
+    -----
+    DeprecationWarning
+        For a ``Scene`` in place of lambda: use ``scene.result(...)``.
 
     Examples
     --------
@@ -257,9 +262,11 @@ def summary(lam: RealArrayLike | SceneLike[Any], model: str | None = None,
     >>> zs.summary([0.5, 1.0]).e.shape
     (2,)
     """
-    if callable(getattr(lam, "summary", None)):
+    if callable(getattr(lam, "result", None)):
         # A Scene answers for itself (this layer does not import the scene layer above it).
-        return cast("SceneLike[Any]", lam).summary(model=model, **options)
+        warnings.warn("zener_sym.summary(scene) is deprecated: use scene.result(...), the one "
+                      "route from a scene to its result", DeprecationWarning, stacklevel=2)
+        return cast("SceneLike[Any]", lam).result(model=model, **options)
     if model is None:
         model = "exact"
     m, arr = _validated(model, cast(RealArrayLike, lam))
@@ -342,15 +349,20 @@ def history(lam: RealArrayLike, tau: RealArrayLike, model: str = "exact",
     return History(m, values, scalar=False, skipped=skipped)
 
 
-def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
-            tau_d: RealArrayLike | None = None, contact_end: str = "delta") -> float | FloatArray:
+def lam_from_summary(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
+                     tau_d: RealArrayLike | None = None,
+                     contact_end: str = "delta") -> float | FloatArray:
     """The lambda whose exact solution has a given restitution, energy loss or contact duration.
 
-    The inverse of :func:`summary` (lambda is Zener's parameter, Eq. 11). Give exactly one of
+    The inverse of :func:`summary` (lambda is Zener's parameter, Eq. 11): lambda from a field of
+    the summary (``zener_sym.lam_from_dissipation`` is the grains' forward map, lambda from the
+    dissipative constant A). Called ``lam_for`` before (that name still works, with a
+    ``DeprecationWarning``). Give exactly one of
     ``e``, ``xi``, ``tau_d``. Solved on the exact model's Chebyshev tables (0 <= lambda <= 1000)
     by a safeguarded Newton iteration whose derivative is the tables' own
-    (``zener_sym.exact.table.summary_derivative``), all values at once: ``summary(lam_for(e=x)).e``
-    is within 1e-12 relative of x (the tables' accuracy against the true solution is 1e-11).
+    (``zener_sym.exact.table.summary_derivative``), all values at once:
+    ``summary(lam_from_summary(e=x)).e`` is within 1e-12 relative of x (the tables' accuracy
+    against the true solution is 1e-11).
 
     Parameters
     ----------
@@ -378,10 +390,10 @@ def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
     Examples
     --------
     >>> import zener_sym as zs
-    >>> lam = zs.lam_for(e=0.5)
+    >>> lam = zs.lam_from_summary(e=0.5)
     >>> round(lam, 6), round(zs.summary(lam).e, 12)
     (0.417662, 0.5)
-    >>> zs.lam_for(e=[1.0, 0.9]).round(6)
+    >>> zs.lam_from_summary(e=[1.0, 0.9]).round(6)
     array([0.      , 0.061501])
     """
     end = check_contact_end(contact_end)
@@ -389,6 +401,17 @@ def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
     scalar = len(given) == 1 and np.ndim(given[0]) == 0
     lam = np.asarray(_inverse.lam_for(e=e, xi=xi, tau_d=tau_d, contact_end=end), dtype=float)
     return float(lam) if scalar else lam
+
+
+def lam_for(e: RealArrayLike | None = None, xi: RealArrayLike | None = None,
+            tau_d: RealArrayLike | None = None, contact_end: str = "delta") -> float | FloatArray:
+    """Deprecated name of :func:`lam_from_summary`, kept for one release: it issues a
+    ``DeprecationWarning``, then returns what :func:`lam_from_summary` returns for the same
+    arguments."""
+    warnings.warn("lam_for is deprecated: use lam_from_summary (lambda from e, xi or tau_d; "
+                  "lam_from_dissipation is lambda from the grains' dissipative constant A)",
+                  DeprecationWarning, stacklevel=2)
+    return lam_from_summary(e=e, xi=xi, tau_d=tau_d, contact_end=contact_end)
 
 
 def _history_fields(model: Model, fields: object) -> tuple[str, ...]:

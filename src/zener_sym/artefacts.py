@@ -5,7 +5,8 @@ builder of some layer computes. Each entry of :data:`ARTEFACTS` says which files
 to compute their fresh text (``fresh``), how to tell a committed file from a fresh one (``same``:
 a text diff, or a numeric comparison for tables computed by floating-point solvers), and whether
 it needs a source checkout. ``zener-sym regen --check`` compares them all; ``zener-sym regen
-NAME`` rewrites one. The older commands (``generate``, ``exact-table``, ...) stay as aliases.
+NAME`` rewrites one. The older commands (``generate``, ``exact-table``, ...) stay for one
+release, hidden from ``--help`` and deprecated (``zener_sym.cli._deprecated``).
 
 To add an artefact: write a ``fresh(root) -> {path: text}`` function (and a ``same`` when a text
 diff is too strict), and add one :class:`Artefact` to :data:`ARTEFACTS`.

@@ -22,12 +22,13 @@ def fit_target(n: int = 20) -> dict[str, Any]:
     from zener_sym.scene.grains import grain_contact
 
     v0 = np.geomspace(0.1, 10.0, n)
-    c = grain_contact("1 mm", 1e-5, "glass", wall="steel")
+    c = grain_contact("glass", "1 mm", 1e-5, wall="steel")
     # an array for the array v0 (asarray: the signature says float or array)
-    lam = np.asarray(zs.viscoelastic_lambda(3e-7, c.rho, c.m_eff, v0), dtype=np.float64)
+    lam = np.asarray(zs.lam_from_dissipation(3e-7, c.rho, c.m_eff, v0), dtype=np.float64)
     e = zs.summary(lam, model="exact").e + np.random.default_rng(24).normal(0.0, 0.01, n)
     def fit() -> object:
-        return zs.fit_dissipation(v0, e, "1 mm", 1e-5, "glass", wall="steel", contact_end="delta")
+        return zs.fit_dissipation("glass", "1 mm", 1e-5, v0=v0, e=e, wall="steel",
+                                  contact_end="delta")
 
     fit()  # warm-up outside the timing: the first fit imports scipy.optimize and scipy.stats
     t_fit = median_time(fit, min_repeats=3, min_total=0.2)

@@ -1,7 +1,7 @@
 """Speed targets of the force-free end's tables and the inverse (issue 24), measured side by
 side in one run: the force-free end against the plate end on the same grids, and the lookup
-table and ``lam_for`` against a one-second budget (the issue's "well under a second", read as
-at most half of it)."""
+table and ``lam_from_summary`` against a one-second budget (the issue's "well under a second",
+read as at most half of it)."""
 from __future__ import annotations
 
 from typing import Any
@@ -60,8 +60,8 @@ def lookup_table_force(n: int = 1001) -> dict[str, Any]:
 
 
 def lam_for_target(n: int = 100_000, quick: bool = False) -> list[dict[str, Any]]:
-    """``lam_for(e=...)`` on n restitution values spread over each end's reachable range, against
-    the budget; ratio = budget / time (required >= 2)."""
+    """``lam_from_summary(e=...)`` on n restitution values spread over each end's reachable
+    range, against the budget; ratio = budget / time (required >= 2)."""
     import zener_sym as zs
     from ..exact import inverse
 
@@ -69,9 +69,10 @@ def lam_for_target(n: int = 100_000, quick: bool = False) -> list[dict[str, Any]
     for end in ("delta", "force"):
         lo = inverse.reachable("e", end)[0]
         e = np.exp(np.random.default_rng(24).uniform(np.log(lo), 0.0, n))
-        t = median_time(lambda: zs.lam_for(e=e, contact_end=end), min_repeats=1 if quick else 3,
-                        min_total=0.0 if quick else 0.2)
-        rows.append({"target": f"lam_for(e=...), contact_end={end!r}", "grid": f"{n} values",
+        t = median_time(lambda: zs.lam_from_summary(e=e, contact_end=end),
+                        min_repeats=1 if quick else 3, min_total=0.0 if quick else 0.2)
+        rows.append({"target": f"lam_from_summary(e=...), contact_end={end!r}",
+                     "grid": f"{n} values",
                      "fast_s": t, "slow_s": BUDGET_S, "ratio": BUDGET_S / t, "required": 2.0})
     return rows
 

@@ -1,4 +1,7 @@
-"""``zener-sym audit [--json] [--write] [--check]``: the paper audit as a table, JSON or AUDIT.md."""
+"""``zener-sym audit [--json] [--check]``: the paper audit as a table or JSON, or AUDIT.md checked.
+
+``--write`` (rewrite AUDIT.md) is deprecated and hidden from ``--help``: ``zener-sym regen
+audit`` does the same (:mod:`._deprecated`)."""
 from __future__ import annotations
 
 import argparse
@@ -9,6 +12,7 @@ import sys
 from ..audit.markdown import audit_md_path, cached_results, markdown
 from ..audit.run import summary_line
 from ._checkout import CheckoutError, source_root
+from ._deprecated import note
 from ._types import Subparsers
 
 __all__ = ["add_parser"]
@@ -16,6 +20,8 @@ __all__ = ["add_parser"]
 
 def _run(args: argparse.Namespace) -> int:
     root = None
+    if args.write:
+        note("audit --write", "regen audit")
     if args.check or args.write:
         try:  # before any work: the audit takes a while
             root = source_root(f"zener-sym audit --{'check' if args.check else 'write'}")
@@ -36,7 +42,7 @@ def _run(args: argparse.Namespace) -> int:
         sys.stdout.writelines(difflib.unified_diff(
             old.splitlines(True), text.splitlines(True), f"{path.name} (committed)",
             f"{path.name} (regenerated)"))
-        print(f"\n{path.name} is stale: run `zener-sym audit --write`", file=sys.stderr)
+        print(f"\n{path.name} is stale: run `zener-sym regen audit`", file=sys.stderr)
         return 1
     if args.write:
         path = audit_md_path(root)
@@ -51,6 +57,7 @@ def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("audit", help="check the paper's printed equations and claims")
     g = p.add_mutually_exclusive_group()
     g.add_argument("--json", action="store_true", help="print a JSON list of the items")
-    g.add_argument("--write", action="store_true", help="write AUDIT.md at the repository root")
+    # deprecated (zener-sym regen audit): still accepted, no longer listed
+    g.add_argument("--write", action="store_true", help=argparse.SUPPRESS)
     g.add_argument("--check", action="store_true", help="fail with a diff if AUDIT.md is stale")
     p.set_defaults(func=_run)

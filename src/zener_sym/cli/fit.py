@@ -47,25 +47,26 @@ def run(args: argparse.Namespace, out: Out = print) -> int:
     try:
         plot = None if args.plot is None else _plot_path(args.plot)
         data = read_measurements(args.data)
-        mat1 = _material(args.sphere, "sphere", None)
-        R1 = si_value(args.radius, "length", "--radius")
-        m1 = _mass(args.mass, R1, mat1, "--mass")
+        sphere = _material(args.sphere, "sphere", None)
+        radius = si_value(args.radius, "length", "--radius")
+        mass = _mass(args.mass, radius, sphere, "--mass")
         # a second sphere, or a wall; neither: a rigid wall (fit_dissipation's defaults, None)
-        R2: float | None = None
-        m2: float | None = None
-        mat2: Material | None = None
+        radius2: float | None = None
+        mass2: float | None = None
+        sphere2: Material | None = None
         wall: Material | None = None
         if any(x is not None for x in (args.sphere2, args.radius2, args.mass2)):
             if args.wall is not None:
                 raise ValueError("give either --wall or a second sphere (--sphere2, --radius2), "
                                  "not both")
-            mat2 = _material(args.sphere2 or args.sphere, "sphere2", None)
-            R2 = si_value(args.radius2 or args.radius, "length", "--radius2")
-            m2 = _mass(args.mass2, R2, mat2, "--mass2")
+            sphere2 = _material(args.sphere2 or args.sphere, "sphere2", None)
+            radius2 = si_value(args.radius2 or args.radius, "length", "--radius2")
+            mass2 = _mass(args.mass2, radius2, sphere2, "--mass2")
         elif args.wall is not None and args.wall.lower() != "rigid":
             wall = _material(args.wall, "wall", None)
-        fit = fit_dissipation(data.v0, data.e, R1, m1, mat1, sigma=data.sigma, R2=R2, m2=m2,
-                              material2=mat2, wall=wall, contact_end=args.contact_end)
+        fit = fit_dissipation(sphere, radius, mass, v0=data.v0, e=data.e, sigma=data.sigma,
+                              sphere2=sphere2, radius2=radius2, mass2=mass2, wall=wall,
+                              contact_end=args.contact_end)
     except ValueError as exc:
         print(f"zener-sym fit: error: {exc}", file=sys.stderr)
         return 2

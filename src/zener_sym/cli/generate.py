@@ -1,5 +1,6 @@
 """``zener-sym generate [--check]``: emit generated/ and FORMULAS.md from the derivation, or
-verify that both are fresh."""
+verify that both are fresh. Deprecated and hidden from ``--help``: ``zener-sym regen kernels
+formulas`` does the same (:mod:`._deprecated`)."""
 from __future__ import annotations
 
 import sys
@@ -7,6 +8,7 @@ from pathlib import Path
 
 from .. import codegen
 from ._checkout import CheckoutError, source_root
+from ._deprecated import deprecated, hidden_parser
 from ._types import Subparsers
 
 
@@ -53,7 +55,9 @@ def run(check: bool = False) -> int:
 
 
 def add_parser(sub: Subparsers) -> None:
-    p = sub.add_parser("generate", help="emit numpy/mpmath kernels into generated/ from the derivation")
+    p = hidden_parser(sub, "generate", "regen kernels formulas")
     p.add_argument("--check", action="store_true",
                    help="regenerate in memory and fail with a unified diff if generated/ is stale")
-    p.set_defaults(func=lambda args: run(check=args.check))
+    p.set_defaults(func=deprecated(
+        "generate", lambda args: f"regen{' --check' if args.check else ''} kernels formulas",
+        lambda args: run(check=args.check)))

@@ -1,6 +1,7 @@
 """``zener-sym ham-convergence [--check]``: the convergence study of the HAM series
 (:mod:`zener_sym.bench.ham_convergence`): rewrite the table of docs/ham_convergence.md, its CSV
-and chart, or check that the committed table and CSV are fresh."""
+and chart, or check that the committed table and CSV are fresh. Deprecated and hidden from
+``--help``: ``zener-sym regen ham-convergence`` does the same (:mod:`._deprecated`)."""
 from __future__ import annotations
 
 import argparse
@@ -8,6 +9,7 @@ import sys
 
 from ..bench import ham_convergence
 from ._checkout import CheckoutError, check_result, source_root
+from ._deprecated import deprecated, hidden_parser
 from ._types import Subparsers
 
 
@@ -20,7 +22,8 @@ def _run(args: argparse.Namespace) -> int:
     if args.check:
         return check_result(
             ham_convergence.check(root=root),
-            "docs/ham_convergence.md or its CSV is stale (run 'zener-sym ham-convergence'):",
+            "docs/ham_convergence.md or its CSV is stale (run 'zener-sym regen "
+            "ham-convergence'):",
             f"{root / 'docs' / 'ham_convergence.md'} is up to date")
     for p in ham_convergence.write(root=root, with_chart=not args.no_chart):
         print(f"wrote {p}")
@@ -28,9 +31,10 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def add_parser(sub: Subparsers) -> None:
-    p = sub.add_parser("ham-convergence", help="convergence study of the HAM series: orders, "
-                       "Liao's c0, both formulations, against exact (docs/ham_convergence.md)")
+    p = hidden_parser(sub, "ham-convergence", "regen ham-convergence")
     p.add_argument("--check", action="store_true",
                    help="regenerate in memory; exit 1 with a diff if the committed table is stale")
     p.add_argument("--no-chart", action="store_true", help="skip the chart")
-    p.set_defaults(func=_run)
+    p.set_defaults(func=deprecated(
+        "ham-convergence", lambda args: f"regen{' --check' if args.check else ''} "
+                                        "ham-convergence", _run))

@@ -270,6 +270,6 @@ def _solve(quantity: str, target: FloatArray, contact_end: str) -> FloatArray:
         if active.size == 0:
             break
     else:
-        raise RuntimeError(f"lam_for: no convergence for {quantity} = {t[active[0]]!r} "
-                           f"(contact_end={contact_end!r}); this is a bug")
+        raise RuntimeError(f"exact.inverse.lam_for: no convergence for {quantity} = "
+                           f"{t[active[0]]!r} (contact_end={contact_end!r}); this is a bug")
     return lam.reshape(shape)

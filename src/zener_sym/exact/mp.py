@@ -136,7 +136,7 @@ def _poly_root(c: Sequence[Any], target: Any, h: Any) -> Any:
         s -= ds
         if abs(ds) <= tol:
             return s
-    raise RuntimeError("exact_mp: Newton's method on the Taylor polynomial did not converge")
+    raise RuntimeError("exact.mp: Newton's method on the Taylor polynomial did not converge")
 
 
 def _order(dps: int) -> int:
@@ -188,7 +188,7 @@ def _jets_tau(y0: Sequence[Any], lam: Any, N: int) -> list[list[Any]]:
     """Taylor coefficients in s = τ − τ0 of (δ, v, w, J) of the τ-form (phase 2)."""
     d, v, w, J = ([y] for y in y0)
     if not d[0] > 0:
-        raise RuntimeError(f"exact_mp: delta = {d[0]} <= 0 inside the tau phase (guard)")
+        raise RuntimeError(f"exact.mp: delta = {d[0]} <= 0 inside the tau phase (guard)")
     sq = [mpmath.sqrt(d[0])]  # √δ
     two_s0 = 2 * sq[0]
     F: list[Any] = []
@@ -460,7 +460,7 @@ def _integrate(lam: Any, dps: int, N: int) -> MpSolution:
         if done:
             break
     else:
-        raise RuntimeError(f"exact_mp: loading phase did not reach v = 1/2 at lambda = {lam}")
+        raise RuntimeError(f"exact.mp: loading phase did not reach v = 1/2 at lambda = {lam}")
 
     # Phase 2: τ, state (δ, v, w, J). Events: v = 0 (end of compression) by Newton on the
     # local polynomial; hand-over to u at the end of the first recovery step with v² >= 2δ^{5/2}.
@@ -473,7 +473,7 @@ def _integrate(lam: Any, dps: int, N: int) -> MpSolution:
         h = _step_size(c, N)
         y_new = [horner(ci, h) for ci in c]
         if not y_new[0] > 0:  # guard: never step to δ <= 0 in the τ-form
-            raise RuntimeError(f"exact_mp: tau phase stepped to delta <= 0 at lambda = {lam}")
+            raise RuntimeError(f"exact.mp: tau phase stepped to delta <= 0 at lambda = {lam}")
         p2.steps.append(_Step(t, h, c))
         p2.t_start.append(t)
         if tau_dc is None and y_new[1] <= 0:
@@ -483,7 +483,7 @@ def _integrate(lam: Any, dps: int, N: int) -> MpSolution:
         if tau_dc is not None and y[1] < 0 and y[1] ** 2 >= 2 * y[0] ** 2 * mpmath.sqrt(y[0]):
             break
     else:
-        raise RuntimeError(f"exact_mp: tau phase did not hand over at lambda = {lam}")
+        raise RuntimeError(f"exact.mp: tau phase did not hand over at lambda = {lam}")
 
     # Phase 3: u from √δ down to the fixed endpoint u = 0, state (τ, v, w, J).
     p3 = _Phase("u")
@@ -500,7 +500,7 @@ def _integrate(lam: Any, dps: int, N: int) -> MpSolution:
         if last:
             break
     else:
-        raise RuntimeError(f"exact_mp: unloading phase did not reach u = 0 at lambda = {lam}")
+        raise RuntimeError(f"exact.mp: unloading phase did not reach u = 0 at lambda = {lam}")
 
     tau_d, v_end, w_end, J_end = y
     return MpSolution(lam=lam, dps=dps, delta_m=delta_m, tau_dc=tau_dc, tau_d=tau_d,

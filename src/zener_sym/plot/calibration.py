@@ -99,7 +99,7 @@ def fit_chart(fit: FittedDissipation, path: str | os.PathLike[str] | None = None
     >>> matplotlib.use("Agg")
     >>> import zener_sym as zs
     >>> from zener_sym.plot.calibration import fit_chart
-    >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
+    >>> fit = zs.fit_dissipation("glass", "1 mm", 1e-5, v0=[0.5, 1.0, 2.0], e=[0.82, 0.80, 0.77],
     ...                          wall="steel")
     >>> fig = fit_chart(fit, title="glass on steel")
     >>> [ax.get_ylabel() for ax in fig.axes]

@@ -29,7 +29,7 @@ DATA_LABEL: str = "Bridges et al. (1984) law"
 def fit() -> DissipationFit:
     """The page's fit (force-free end), from the packaged data file."""
     data = read_measurements((resources.files("zener_sym") / "data" / DATA).read_text("utf-8"))
-    return fit_dissipation(data.v0, data.e, RADIUS, sphere_mass(RADIUS, ICE.rho), ICE,
+    return fit_dissipation(ICE, RADIUS, sphere_mass(RADIUS, ICE.rho), v0=data.v0, e=data.e,
                            sigma=data.sigma, wall=ICE, contact_end="force")
 
 

@@ -5,14 +5,23 @@ c(v0) = (rho/m_eff)^{2/5} v0^{1/5} (``zener_sym.derivation.viscoelastic``; rho, 
 :func:`~zener_sym.scene.grains.grain_contact`), and its coefficient of restitution is e(lambda) of
 Eq. (10) with the chosen end of contact. So
 
-- one measured e at one speed gives A = lam_for(e) / c(v0) (:func:`dissipation_for`);
+- one measured e at one speed gives A = lambda(e) / c(v0) (:func:`dissipation_for`, with
+  lambda(e) from ``zener_sym.lam_from_summary``);
 - pairs (v0_i, e_i) give A by least squares, min over A of sum_i ((e_i - e(A c(v0_i))) / sigma_i)^2
   (:func:`fit_dissipation`). The fit runs in p = ln A (A stays positive, and e depends on A only
   through lambda, so the problem is as well scaled at A = 1e-12 s as at 1 s). Its Jacobian is
   de_i/dp = e'(lambda_i) lambda_i, e' = de/dlambda from the exact tables (not finite
   differences), for either end of contact;
 - for Zener's plate, lambda is proportional to H^{-2} (derived Eq. 11), so the thickness that
-  gives a measured e is H lam^{1/2} / lam_for(e)^{1/2} (:func:`thickness_for`).
+  gives a measured e, or a measured contact duration t_d, is H (lam / lambda(e))^{1/2}
+  (:func:`thickness_for`; t_d = T tau_d(lambda) with T independent of H, and tau_d is monotone
+  in lambda on the plate).
+
+The grains are given as in :func:`~zener_sym.grain_impact` (``sphere, radius, mass``, then
+``sphere2, radius2, mass2`` or ``wall``), the measured arrays by keyword only, speed first
+(``v0=..., e=...``). The old call forms (``dissipation_for(e, v0, R1, m1, material1)``,
+``fit_dissipation(v0, e, R1, m1, material1)``) still work for one release, with a
+``DeprecationWarning`` (:mod:`zener_sym.scene.legacy`).
 
 e(v0) data constrain only the product A (rho/m_eff)^{2/5}: Young's modulus enters e only
 through rho, so it cannot be fitted beside A from e alone (a contact-time measurement would
@@ -30,15 +39,17 @@ from typing import TYPE_CHECKING, overload
 
 import numpy as np
 
-from ..api import lam_for, summary
+from ..api import lam_from_summary, summary
 from ..exact.force_end import check_contact_end
+from ..exact.inverse import reachable
 from ..exact.solver import LAMBDA_MAX
 from ..exact.table import summary_derivative
 from ..typing import FloatArray, RealArrayLike, RealLike
 from .grains import GrainContact, _pos_array, grain_contact
+from .legacy import accepts_old_call
 from .materials import Material
 from .scene import Scene
-from .units import UNITS
+from .units import UNITS, si_value
 
 if TYPE_CHECKING:  # annotations only: matplotlib is optional (the plot extra)
     from matplotlib.figure import Figure
@@ -69,23 +80,25 @@ def _e_array(e: object, name: str = "e") -> FloatArray:
 
 
 @overload
-def dissipation_for(e: RealLike, v0: RealLike, R1: float | str, m1: float,
-                    material1: Material | str, *, R2: float | str | None = None,
-                    m2: float | None = None, material2: Material | str | None = None,
+def dissipation_for(sphere: Material | str, radius: float | str, mass: float, *, v0: RealLike,
+                    e: RealLike, sphere2: Material | str | None = None,
+                    radius2: float | str | None = None, mass2: float | None = None,
                     wall: Material | str | None = None, contact_end: str = "force") -> float: ...
 
 
 @overload
-def dissipation_for(e: RealArrayLike, v0: RealArrayLike, R1: float | str, m1: float,
-                    material1: Material | str, *, R2: float | str | None = None,
-                    m2: float | None = None, material2: Material | str | None = None,
+def dissipation_for(sphere: Material | str, radius: float | str, mass: float, *,
+                    v0: RealArrayLike, e: RealArrayLike, sphere2: Material | str | None = None,
+                    radius2: float | str | None = None, mass2: float | None = None,
                     wall: Material | str | None = None,
                     contact_end: str = "force") -> float | FloatArray: ...
 
 
-def dissipation_for(e: RealArrayLike, v0: RealArrayLike, R1: float | str, m1: float,
-                    material1: Material | str, *, R2: float | str | None = None,
-                    m2: float | None = None, material2: Material | str | None = None,
+@accepts_old_call(("e", "v0", "R1", "m1", "material1"),
+                  "dissipation_for(sphere, radius, mass, v0=..., e=..., ...)")
+def dissipation_for(sphere: Material | str, radius: float | str, mass: float, *,
+                    v0: RealArrayLike, e: RealArrayLike, sphere2: Material | str | None = None,
+                    radius2: float | str | None = None, mass2: float | None = None,
                     wall: Material | str | None = None,
                     contact_end: str = "force") -> float | FloatArray:
     """The dissipative constant A [s] that gives the coefficient of restitution ``e`` at the
@@ -93,12 +106,13 @@ def dissipation_for(e: RealArrayLike, v0: RealArrayLike, R1: float | str, m1: fl
 
     Parameters
     ----------
-    e : float or array_like
-        Measured coefficient(s) of restitution, 0 < e <= 1 (e = 1 gives A = 0).
+    sphere, radius, mass, sphere2, radius2, mass2, wall
+        The grains, as in :func:`~zener_sym.grain_impact` (two spheres, or a sphere on a wall).
     v0 : float or array_like
-        Normal relative impact speed(s) [m/s], > 0; broadcast against ``e``.
-    R1, m1, material1, R2, m2, material2, wall
-        The grains, as in :func:`~zener_sym.grain_impact` (two spheres, or sphere 1 on a wall).
+        Normal relative impact speed(s) [m/s], > 0; keyword-only, as is ``e``.
+    e : float or array_like
+        Measured coefficient(s) of restitution, 0 < e <= 1 (e = 1 gives A = 0); broadcast
+        against ``v0``.
     contact_end : {"force", "delta"}
         End of contact (default the grains' force-free end).
 
@@ -113,37 +127,54 @@ def dissipation_for(e: RealArrayLike, v0: RealArrayLike, R1: float | str, m1: fl
         For e outside (0, 1], a non-positive speed, bad grain inputs, or an e below what
         lambda <= 1000 gives (the reachable range is in the message).
 
+    Warns
+    -----
+    DeprecationWarning
+        For the old call form ``dissipation_for(e, v0, R1, m1, material1, ...)``, which still
+        works for one release (:mod:`zener_sym.scene.legacy`).
+
     Examples
     --------
     >>> import zener_sym as zs
-    >>> A = zs.dissipation_for(0.8, 1.0, "1 mm", 1e-5, "glass", wall="steel")
-    >>> r = zs.grain_impact("1 mm", 1e-5, "glass", A=A, v0=1.0, wall="steel")
+    >>> A = zs.dissipation_for("glass", "1 mm", 1e-5, v0=1.0, e=0.8, wall="steel")
+    >>> r = zs.grain_impact("glass", "1 mm", 1e-5, A=A, v0=1.0, wall="steel")
     >>> round(r.e, 12)
     0.8
     """
     ce = check_contact_end(contact_end)
     e_ = _e_array(e)
     v_ = _pos_array(v0, "v0", "m/s", "impact speed")
-    contact = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
+    contact = grain_contact(sphere, radius, mass, sphere2=sphere2, radius2=radius2, mass2=mass2,
+                            wall=wall)
     e_b, v_b = np.broadcast_arrays(e_, v_)
-    A: FloatArray = np.asarray(lam_for(e=e_b, contact_end=ce), dtype=float) / _rate(contact, v_b)
+    A: FloatArray = (np.asarray(lam_from_summary(e=e_b, contact_end=ce), dtype=float)
+                     / _rate(contact, v_b))
     return float(A) if A.ndim == 0 else A
 
 
-def thickness_for(scene: Scene, e: RealLike) -> float:
+def thickness_for(scene: Scene, e: RealLike | None = None, *,
+                  contact_time: float | str | None = None) -> float:
     """The plate thickness [m] at which ``scene`` (all else kept) has the coefficient of
-    restitution ``e`` on Zener's plate (end of contact at delta = 0).
+    restitution ``e``, or the contact duration ``contact_time``, on Zener's plate (end of
+    contact at delta = 0).
 
     lambda = alpha m*/T with alpha proportional to H^{-2} and T independent of H (derived
-    Eq. 11), so H = H_scene (lambda_scene / lambda(e))^{1/2}. The thin-plate reading needs H
-    well above the contact radius; ``Scene(...).warnings`` says when it is not.
+    Eq. 11), so H = H_scene (lambda_scene / lambda)^{1/2}, lambda the one with that e (or with
+    tau_d = contact_time / T: tau_d grows monotonically with lambda on the plate, so a duration
+    gives one lambda). The thin-plate reading needs H well above the contact radius;
+    ``Scene(...).warnings`` says when it is not.
 
     Parameters
     ----------
     scene : Scene
         The sphere, plate material and speed (its thickness is the starting point only).
-    e : float
+    e : float, optional
         Measured coefficient of restitution, 0 < e < 1 (e = 1 needs an infinitely thick plate).
+    contact_time : float or str, optional
+        Instead of ``e`` (keyword-only): the measured contact duration t_d, in seconds or with a
+        unit (``"25 us"``), above Hertz's duration on a rigid half-space (an infinitely thick
+        plate) and at most the duration at lambda = 1000. Impact-echo measurements give it more
+        readily than e. Give exactly one of ``e`` and ``contact_time``.
 
     Returns
     -------
@@ -153,7 +184,9 @@ def thickness_for(scene: Scene, e: RealLike) -> float:
     Raises
     ------
     ValueError
-        For e outside (0, 1) or below what lambda <= 1000 gives.
+        For both or neither of ``e`` and ``contact_time``, e outside (0, 1) or below what
+        lambda <= 1000 gives, or a duration outside the reachable range (given in seconds in
+        the message).
 
     Examples
     --------
@@ -163,14 +196,38 @@ def thickness_for(scene: Scene, e: RealLike) -> float:
     >>> sc2 = zs.Scene("steel", "glass", radius="1 mm", thickness=H, v0="1 m/s")
     >>> round(zs.summary(sc2.lam).e, 12)
     0.5
+    >>> H = zs.thickness_for(sc, contact_time="12 us")
+    >>> sc3 = zs.Scene("steel", "glass", radius="1 mm", thickness=H, v0="1 m/s")
+    >>> round(sc3.result(model="exact").contact_duration_s * 1e6, 9)
+    12.0
     """
     if not isinstance(scene, Scene):
         raise ValueError(f"scene must be a zener_sym.Scene, got {type(scene).__name__}")
-    e_ = float(_e_array(e))
-    if e_ == 1.0:
-        raise ValueError("e = 1 needs lambda = 0, an infinitely thick plate; allowed: 0 < e < 1")
-    lam = float(lam_for(e=e_, contact_end="delta"))
+    if (e is None) == (contact_time is None):
+        raise ValueError(f"give exactly one of e (coefficient of restitution) and contact_time "
+                         f"(e.g. '25 us'), got e={e!r}, contact_time={contact_time!r}")
+    if contact_time is not None:
+        lam = _lam_for_contact_time(scene, si_value(contact_time, "time", "contact_time"))
+    else:
+        e_ = float(_e_array(e))
+        if e_ == 1.0:
+            raise ValueError("e = 1 needs lambda = 0, an infinitely thick plate; allowed: "
+                             "0 < e < 1")
+        lam = float(lam_from_summary(e=e_, contact_end="delta"))
     return scene.thickness * math.sqrt(scene.lam / lam)
+
+
+def _lam_for_contact_time(scene: Scene, t_d: float) -> float:
+    """The plate's lambda whose contact lasts ``t_d`` seconds in ``scene`` (T kept: it does not
+    depend on the thickness); ValueError, in seconds, for a duration no thickness gives."""
+    T = scene.T
+    lo, hi = reachable("tau_d", contact_end="delta")
+    if not T * lo < t_d <= T * hi:
+        raise ValueError(f"contact_time = {t_d:.6g} s is not reachable in this scene: allowed "
+                         f"{T * lo:.6g} s < contact_time <= {T * hi:.6g} s (the shortest is "
+                         f"Hertz's, on an infinitely thick plate; the longest at lambda = "
+                         f"{LAMBDA_MAX:g})")
+    return float(lam_from_summary(tau_d=t_d / T, contact_end="delta"))
 
 
 @dataclass
@@ -316,7 +373,7 @@ class DissipationFit:
     Examples
     --------
     >>> import zener_sym as zs
-    >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
+    >>> fit = zs.fit_dissipation("glass", "1 mm", 1e-5, v0=[0.5, 1.0, 2.0], e=[0.82, 0.80, 0.77],
     ...                          wall="steel")
     >>> f"{fit.A:.3g} s", fit.dof, fit.sigma_from
     ('2.4e-07 s', 2, 'residuals')
@@ -367,8 +424,8 @@ class DissipationFit:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
-        ...                          wall="steel")
+        >>> fit = zs.fit_dissipation("glass", "1 mm", 1e-5, v0=[0.5, 1.0, 2.0],
+        ...                          e=[0.82, 0.80, 0.77], wall="steel")
         >>> p = fit.predict(5.0)
         >>> round(p["e"], 4), round(p["e_low"], 4), round(p["e_high"], 4)
         (0.7356, 0.728, 0.743)
@@ -405,8 +462,8 @@ class DissipationFit:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
-        ...                          wall="steel")
+        >>> fit = zs.fit_dissipation("glass", "1 mm", 1e-5, v0=[0.5, 1.0, 2.0],
+        ...                          e=[0.82, 0.80, 0.77], wall="steel")
         >>> print(fit.summary().splitlines()[0])
         dissipative constant A = 2.40221e-07 s  (standard error 1.98e-09 s, 0.82%)
         """
@@ -458,8 +515,8 @@ class DissipationFit:
         >>> import matplotlib
         >>> matplotlib.use("Agg")
         >>> import zener_sym as zs
-        >>> fit = zs.fit_dissipation([0.5, 1.0, 2.0], [0.82, 0.80, 0.77], "1 mm", 1e-5, "glass",
-        ...                          wall="steel")
+        >>> fit = zs.fit_dissipation("glass", "1 mm", 1e-5, v0=[0.5, 1.0, 2.0],
+        ...                          e=[0.82, 0.80, 0.77], wall="steel")
         >>> fig = fit.plot()
         >>> len(fig.axes)                    # e(v0) above, the residuals below
         2
@@ -478,10 +535,126 @@ def _trend(v0: FloatArray, e: FloatArray, w: FloatArray) -> float:
     return float(np.sum(w * (x - xm) * (e - em)) / np.sum(w * (x - xm) ** 2))
 
 
-def fit_dissipation(v0: RealArrayLike, e: RealArrayLike, R1: float | str, m1: float,
-                    material1: Material | str, *, sigma: RealArrayLike | None = None,
-                    R2: float | str | None = None, m2: float | None = None,
-                    material2: Material | str | None = None, wall: Material | str | None = None,
+def _fit_data(v0: RealArrayLike, e: RealArrayLike,
+              sigma: RealArrayLike | None) -> tuple[FloatArray, FloatArray, FloatArray | None]:
+    """The measured pairs (and sigma, one per point) as 1-d arrays, checked: equal lengths,
+    enough points, not all elastic, and e not rising with speed (:func:`fit_dissipation`'s
+    refusals that need no model)."""
+    v_ = np.atleast_1d(_pos_array(v0, "v0", "m/s", "impact speed")).astype(float)
+    e_ = np.atleast_1d(_e_array(e)).astype(float)
+    if v_.ndim != 1 or e_.ndim != 1:
+        raise ValueError(f"v0 and e must be 1-d sequences, got shapes {v_.shape} and {e_.shape}")
+    if v_.size != e_.size:
+        raise ValueError(f"v0 and e must have equal lengths, got {v_.size} speeds and "
+                         f"{e_.size} values of e")
+    s_ = None
+    if sigma is not None:
+        s_ = np.atleast_1d(_pos_array(sigma, "sigma", "units of e", "standard deviation of e"))
+        if s_.size == 1:
+            s_ = np.full(e_.size, float(s_.ravel()[0]))
+        if s_.shape != e_.shape:
+            raise ValueError(f"sigma must be one number or one per point ({e_.size}), got "
+                             f"{s_.size}")
+    n_min = 1 if s_ is not None else 2
+    if e_.size < n_min:
+        raise ValueError(f"{e_.size} point(s) for 1 parameter (A): the fit needs at least "
+                         f"{n_min} ({'with' if s_ is not None else 'without'} sigma; without it "
+                         f"the scatter comes from the residuals)")
+    if np.all(e_ == 1.0):
+        raise ValueError("every e is 1: the contact is elastic, A = 0; nothing to fit")
+    if np.unique(v_).size >= 2:
+        slope = _trend(v_, e_, np.ones_like(e_) if s_ is None else 1.0 / s_**2)
+        if slope > 0.0:
+            raise ValueError(f"e rises with speed (least-squares slope of e against ln v0: "
+                             f"{slope:+.3g}); the viscoelastic e falls with speed for every "
+                             f"A > 0, so no A fits these data")
+    return v_, e_, s_
+
+
+@dataclass(frozen=True)
+class _Problem:
+    """The least-squares problem in p = ln A: e_i against e(exp(p) c_i), weighted by inv_s."""
+
+    e: FloatArray
+    c: FloatArray
+    inv_s: FloatArray
+    contact_end: str
+
+    @property
+    def p_max(self) -> float:
+        """ln A at which the fastest point reaches lambda = LAMBDA_MAX."""
+        return math.log(LAMBDA_MAX / float(self.c.max()))
+
+    def lams(self, p: FloatArray | list[float]) -> FloatArray:
+        # at the bound exp(ln(1000/c)) c may round 1 ulp above 1000
+        return np.minimum(math.exp(p[0]) * self.c, LAMBDA_MAX)
+
+    def e_model(self, p: FloatArray | list[float]) -> FloatArray:
+        return np.asarray(summary(self.lams(p), model="exact", contact_end=self.contact_end).e,
+                          dtype=float)
+
+    def residuals(self, p: FloatArray) -> FloatArray:
+        r: FloatArray = (self.e - self.e_model(p)) * self.inv_s
+        return r
+
+    def jacobian(self, p: FloatArray | list[float]) -> FloatArray:
+        lam = self.lams(p)
+        de = summary_derivative(lam, field="e", contact_end=self.contact_end)
+        return (-de * lam * self.inv_s)[:, None]
+
+    def start(self) -> float:
+        """The median of the one-point inversions (each e clipped into the reachable range)."""
+        e_floor = float(summary(LAMBDA_MAX, model="exact", contact_end=self.contact_end).e)
+        lam0 = np.asarray(lam_from_summary(e=np.clip(self.e, e_floor * (1 + 1e-12), 1.0),
+                                           contact_end=self.contact_end))
+        a0 = lam0 / self.c
+        p0 = math.log(float(np.median(a0[a0 > 0]))) if np.any(a0 > 0) else self.p_max - 10.0
+        return min(p0, self.p_max - 1e-9)
+
+
+def _solve(problem: _Problem, v0: FloatArray) -> tuple[float, int]:
+    """ln A of the least-squares fit and the solver's evaluations; ValueError when it does not
+    converge or stops at the model's bound lambda = LAMBDA_MAX."""
+    from scipy.optimize import least_squares
+
+    p_max = problem.p_max
+    sol = least_squares(problem.residuals, [problem.start()], jac=problem.jacobian,
+                        bounds=([-np.inf], [p_max]), method="trf", x_scale=[1.0], xtol=1e-15,
+                        ftol=1e-15, gtol=1e-15, max_nfev=200)
+    if sol.status <= 0:
+        raise ValueError(f"the fit did not converge ({sol.message}); A reached "
+                         f"{math.exp(sol.x[0]):.6g} s after {sol.nfev} evaluations")
+    p = float(sol.x[0])
+    if sol.active_mask[0] != 0 or p_max - p < 1e-6:
+        raise ValueError(f"these e are lower than lambda <= {LAMBDA_MAX:g} gives at "
+                         f"v0 = {float(v0[np.argmax(problem.c)]):.6g} m/s: the best A is at the "
+                         f"model's bound {math.exp(p_max):.6g} s")
+    return p, int(sol.nfev)
+
+
+def _interval(J: FloatArray, rw: FloatArray, sigma_given: bool) -> tuple[float, float, float]:
+    """(scatter s, standard error of ln A, quantile q) from the Jacobian J in ln A and the
+    weighted residuals rw: Student's t with n - 1 degrees of freedom when the scatter comes from
+    the residuals, the normal quantile when sigma was given."""
+    from scipy.stats import norm, t as student_t
+
+    JtJ = float(J @ J)
+    if not JtJ > 0.0:
+        raise ValueError("the data do not constrain A (de/dA = 0 at every point)")
+    dof = rw.size - 1
+    if not sigma_given:
+        scat = math.sqrt(float(rw @ rw) / dof)
+        return scat, scat / math.sqrt(JtJ), float(student_t.ppf(0.5 + CONFIDENCE / 2, dof))
+    scat = math.sqrt(float(rw @ rw) / max(dof, 1))  # one point: fitted exactly, 0
+    return scat, 1.0 / math.sqrt(JtJ), float(norm.ppf(0.5 + CONFIDENCE / 2))
+
+
+@accepts_old_call(("v0", "e", "R1", "m1", "material1"),
+                  "fit_dissipation(sphere, radius, mass, v0=..., e=..., ...)")
+def fit_dissipation(sphere: Material | str, radius: float | str, mass: float, *,
+                    v0: RealArrayLike, e: RealArrayLike, sigma: RealArrayLike | None = None,
+                    sphere2: Material | str | None = None, radius2: float | str | None = None,
+                    mass2: float | None = None, wall: Material | str | None = None,
                     contact_end: str = "force") -> DissipationFit:
     """Fit the dissipative constant A [s] to measured pairs (v0_i, e_i) by least squares.
 
@@ -492,11 +665,11 @@ def fit_dissipation(v0: RealArrayLike, e: RealArrayLike, R1: float | str, m1: fl
 
     Parameters
     ----------
+    sphere, radius, mass, sphere2, radius2, mass2, wall
+        The grains, as in :func:`~zener_sym.grain_impact`.
     v0, e : array_like
         Normal impact speeds [m/s] (> 0) and coefficients of restitution (0 < e <= 1), equal
-        lengths.
-    R1, m1, material1, R2, m2, material2, wall
-        The grains, as in :func:`~zener_sym.grain_impact`.
+        lengths; keyword-only, so that the two arrays cannot be swapped unseen.
     sigma : float or array_like, optional
         Standard deviation of each e (> 0). Given, the residuals are weighted by 1/sigma and the
         interval uses it as stated; left out, the scatter is estimated from the residuals
@@ -516,107 +689,36 @@ def fit_dissipation(v0: RealArrayLike, e: RealArrayLike, R1: float | str, m1: fl
         model's e falls with speed for every A > 0), e below what lambda <= 1000 gives, or a
         solver that does not converge.
 
+    Warns
+    -----
+    DeprecationWarning
+        When called as ``fit_dissipation(v0, e, R1, m1, material1, ...)``: translated and fitted
+        all the same, until the next release drops that form.
+
     Examples
     --------
     >>> import numpy as np, zener_sym as zs
     >>> v = np.array([0.5, 1.0, 2.0, 4.0])
     >>> A = 2e-7
-    >>> e = [zs.grain_impact("1 mm", 1e-5, "glass", A=A, v0=x, wall="steel").e for x in v]
-    >>> fit = zs.fit_dissipation(v, e, "1 mm", 1e-5, "glass", wall="steel")
+    >>> e = [zs.grain_impact("glass", "1 mm", 1e-5, A=A, v0=x, wall="steel").e for x in v]
+    >>> fit = zs.fit_dissipation("glass", "1 mm", 1e-5, v0=v, e=e, wall="steel")
     >>> abs(fit.A / A - 1) < 1e-9
     True
     """
-    from scipy.optimize import least_squares
-    from scipy.stats import norm, t as student_t
-
     ce = check_contact_end(contact_end)
-    v_ = np.atleast_1d(_pos_array(v0, "v0", "m/s", "impact speed")).astype(float)
-    e_ = np.atleast_1d(_e_array(e)).astype(float)
-    if v_.ndim != 1 or e_.ndim != 1:
-        raise ValueError(f"v0 and e must be 1-d sequences, got shapes {v_.shape} and {e_.shape}")
-    if v_.size != e_.size:
-        raise ValueError(f"v0 and e must have equal lengths, got {v_.size} speeds and "
-                         f"{e_.size} values of e")
-    if sigma is not None:
-        s_ = np.atleast_1d(_pos_array(sigma, "sigma", "units of e", "standard deviation of e"))
-        if s_.size == 1:
-            s_ = np.full(e_.size, float(s_.ravel()[0]))
-        if s_.shape != e_.shape:
-            raise ValueError(f"sigma must be one number or one per point ({e_.size}), got "
-                             f"{s_.size}")
-    else:
-        s_ = None
-    n_min = 1 if s_ is not None else 2
-    if e_.size < n_min:
-        raise ValueError(f"{e_.size} point(s) for 1 parameter (A): the fit needs at least "
-                         f"{n_min} ({'with' if s_ is not None else 'without'} sigma; without it "
-                         f"the scatter comes from the residuals)")
-    if np.all(e_ == 1.0):
-        raise ValueError("every e is 1: the contact is elastic, A = 0; nothing to fit")
-    w = np.ones_like(e_) if s_ is None else 1.0 / s_**2
-    if np.unique(v_).size >= 2:
-        slope = _trend(v_, e_, w)
-        if slope > 0.0:
-            raise ValueError(f"e rises with speed (least-squares slope of e against ln v0: "
-                             f"{slope:+.3g}); the viscoelastic e falls with speed for every "
-                             f"A > 0, so no A fits these data")
-    contact = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
-    c = _rate(contact, v_)
+    v_, e_, s_ = _fit_data(v0, e, sigma)
+    contact = grain_contact(sphere, radius, mass, sphere2=sphere2, radius2=radius2, mass2=mass2,
+                            wall=wall)
     inv_s = np.ones_like(e_) if s_ is None else 1.0 / s_
-    p_max = math.log(LAMBDA_MAX / float(c.max()))
-
-    # start: the median of the one-point inversions (each e clipped into the reachable range)
-    e_floor = float(summary(LAMBDA_MAX, model="exact", contact_end=ce).e)
-    lam0 = np.asarray(lam_for(e=np.clip(e_, e_floor * (1 + 1e-12), 1.0), contact_end=ce))
-    a0 = lam0 / c
-    p0 = math.log(float(np.median(a0[a0 > 0]))) if np.any(a0 > 0) else p_max - 10.0
-    p0 = min(p0, p_max - 1e-9)
-
-    def lams(p: FloatArray | list[float]) -> FloatArray:
-        # at the bound exp(ln(1000/c)) c may round 1 ulp above 1000
-        return np.minimum(math.exp(p[0]) * c, LAMBDA_MAX)
-
-    def residuals(p: FloatArray) -> FloatArray:
-        lam = lams(p)
-        r: FloatArray = (e_ - np.asarray(summary(lam, model="exact", contact_end=ce).e)) * inv_s
-        return r
-
-    def jacobian(p: FloatArray | list[float]) -> FloatArray:
-        lam = lams(p)
-        de = summary_derivative(lam, field="e", contact_end=ce)
-        return (-de * lam * inv_s)[:, None]
-
-    sol = least_squares(residuals, [p0], jac=jacobian, bounds=([-np.inf], [p_max]),
-                        method="trf", x_scale=[1.0], xtol=1e-15, ftol=1e-15, gtol=1e-15,
-                        max_nfev=200)
-    if sol.status <= 0:
-        raise ValueError(f"the fit did not converge ({sol.message}); A reached "
-                         f"{math.exp(sol.x[0]):.6g} s after {sol.nfev} evaluations")
-    p = float(sol.x[0])
-    if sol.active_mask[0] != 0 or p_max - float(sol.x[0]) < 1e-6:
-        raise ValueError(f"these e are lower than lambda <= {LAMBDA_MAX:g} gives at "
-                         f"v0 = {float(v_[np.argmax(c)]):.6g} m/s: the best A is at the "
-                         f"model's bound {math.exp(p_max):.6g} s")
+    problem = _Problem(e=e_, c=_rate(contact, v_), inv_s=inv_s, contact_end=ce)
+    p, nfev = _solve(problem, v_)
     A = math.exp(p)
-    lam = lams([p])
-    e_fit = np.asarray(summary(lam, model="exact", contact_end=ce).e, dtype=float)
-    r = (e_ - e_fit)
-    rw = r * inv_s
-    J = jacobian([p])[:, 0]
-    JtJ = float(J @ J)
-    if not JtJ > 0.0:
-        raise ValueError("the data do not constrain A (de/dA = 0 at every point)")
-    dof = e_.size - 1
-    if s_ is None:
-        scat = math.sqrt(float(rw @ rw) / dof)
-        se = scat / math.sqrt(JtJ)
-        q = float(student_t.ppf(0.5 + CONFIDENCE / 2, dof))
-    else:
-        scat = math.sqrt(float(rw @ rw) / max(dof, 1))  # one point: fitted exactly, 0
-        se = 1.0 / math.sqrt(JtJ)
-        q = float(norm.ppf(0.5 + CONFIDENCE / 2))
+    e_fit = problem.e_model([p])
+    r = e_ - e_fit
+    scat, se, q = _interval(problem.jacobian([p])[:, 0], r * inv_s, s_ is not None)
     ci = (A * math.exp(-q * se), A * math.exp(q * se))
-    return DissipationFit(A=A, A_se=A * se, A_ci=ci, v0=v_, e=e_, sigma=s_, lam=lam, e_fit=e_fit,
-                          residuals=r, s=scat, contact_end=ce, contact=contact, dof=dof,
-                          nfev=int(sol.nfev), sigma_from="given" if s_ is not None else "residuals",
+    return DissipationFit(A=A, A_se=A * se, A_ci=ci, v0=v_, e=e_, sigma=s_,
+                          lam=problem.lams([p]), e_fit=e_fit, residuals=r, s=scat,
+                          contact_end=ce, contact=contact, dof=e_.size - 1, nfev=nfev,
+                          sigma_from="given" if s_ is not None else "residuals",
                           se_lnA=se, quantile=q)

@@ -55,7 +55,7 @@ class ZenerWarning(UserWarning):
     >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="0.25 mm", v0="5 m/s")
     >>> with warnings.catch_warnings(record=True) as caught:
     ...     warnings.simplefilter("always")
-    ...     r = sc.summary()
+    ...     r = sc.result()
     >>> any(issubclass(w.category, zs.ZenerWarning) for w in caught)
     True
     """

@@ -77,7 +77,7 @@ def load(where: Path | None = None) -> dict[str, Any]:
     try:
         table: dict[str, Any] = json.loads(where.read_text())
     except FileNotFoundError:
-        raise FileNotFoundError(f"no envelope table at {where}; run 'zener-sym envelopes'") \
+        raise FileNotFoundError(f"no envelope table at {where}; run 'zener-sym regen envelopes'") \
             from None
     if table.get("schema") != SCHEMA:
         raise ValueError(f"{where}: schema {table.get('schema')!r}, expected {SCHEMA!r}")

@@ -20,6 +20,11 @@ A = (1/3) (3 eta2 - eta1)^2/(3 eta2 + 2 eta1) (1 - nu^2)(1 - 2 nu)/(E nu^2); in 
 fitted to measured coefficients of restitution: ``zener_sym.dissipation_for`` (one e at one
 speed) and ``zener_sym.fit_dissipation`` (pairs (v0_i, e_i)), in :mod:`zener_sym.scene.calibrate`.
 
+A sphere's inputs carry the names of :class:`~zener_sym.Scene`: ``sphere`` (its material),
+``radius`` and ``mass``, and ``sphere2``, ``radius2``, ``mass2`` for a second sphere. The old
+names (``R1``, ``m1``, ``material1``, ...) still work for one release, with a
+``DeprecationWarning`` (:mod:`zener_sym.scene.legacy`).
+
 The contact ends, by default, where the viscoelastic force vanishes (``contact_end="force"``, the
 granular literature's criterion, Schwager & Poeschel 2008); ``contact_end="delta"`` ends it at
 xi = 0 (the plate's criterion of Zener's problem). The result says which it used.
@@ -28,6 +33,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import warnings
 from dataclasses import dataclass, field
 from typing import overload
 
@@ -37,10 +43,12 @@ from ..api import history, summary
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
 from ..typing import FloatArray, RealArrayLike, RealLike
+from .legacy import accepts_old_call
 from .materials import Material, get_material
 from .units import si_value
 
-__all__ = ["viscoelastic_lambda", "GrainImpact", "grain_impact", "GrainContact", "grain_contact"]
+__all__ = ["lam_from_dissipation", "viscoelastic_lambda", "GrainImpact", "grain_impact",
+           "GrainContact", "grain_contact"]
 
 
 def _positive(value: object, field: str, unit: str, what: str) -> float:
@@ -69,20 +77,23 @@ def _pos_array(value: object, name: str, unit: str, what: str) -> FloatArray:
 
 
 @overload
-def viscoelastic_lambda(A: RealLike, rho: RealLike, m_eff: RealLike, v0: RealLike) -> float: ...
+def lam_from_dissipation(A: RealLike, rho: RealLike, m_eff: RealLike, v0: RealLike) -> float: ...
 
 
 @overload
-def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
-                        v0: RealArrayLike) -> float | FloatArray: ...
+def lam_from_dissipation(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
+                         v0: RealArrayLike) -> float | FloatArray: ...
 
 
-def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
-                        v0: RealArrayLike) -> float | FloatArray:
-    """Zener's lambda of a viscoelastic grain contact, lambda = A (rho/m_eff)^{2/5} v0^{1/5}.
+def lam_from_dissipation(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
+                         v0: RealArrayLike) -> float | FloatArray:
+    """Zener's lambda of a viscoelastic grain contact from its dissipative constant A,
+    lambda = A (rho/m_eff)^{2/5} v0^{1/5} (the forward map; ``zener_sym.lam_from_summary`` is
+    the inverse of the solution, lambda from e, xi or tau_d).
 
     Derived in ``zener_sym.derivation.viscoelastic`` by mapping m_eff xi'' + rho (xi^{3/2} +
-    A (xi^{3/2})') = 0 onto Eq. (10).
+    A (xi^{3/2})') = 0 onto Eq. (10). Called ``viscoelastic_lambda`` before (that name still
+    works, with a ``DeprecationWarning``).
 
     Parameters
     ----------
@@ -108,7 +119,7 @@ def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLi
     Examples
     --------
     >>> import zener_sym as zs
-    >>> round(zs.viscoelastic_lambda(A=1e-6, rho=1e9, m_eff=1e-5, v0=1.0), 6)
+    >>> round(zs.lam_from_dissipation(A=1e-6, rho=1e9, m_eff=1e-5, v0=1.0), 6)
     0.398107
     """
     A_ = _pos_array(A, "A", "s", "dissipative constant")
@@ -117,6 +128,16 @@ def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLi
     v_ = _pos_array(v0, "v0", "m/s", "impact speed")
     lam: FloatArray = A_ * (r_ / m_) ** 0.4 * v_ ** 0.2
     return float(lam) if lam.ndim == 0 else lam
+
+
+def viscoelastic_lambda(A: RealArrayLike, rho: RealArrayLike, m_eff: RealArrayLike,
+                        v0: RealArrayLike) -> float | FloatArray:
+    """The old name of :func:`lam_from_dissipation`, which said less about which lambda it gives:
+    warns (``DeprecationWarning``) and delegates, until the next release removes it."""
+    warnings.warn("viscoelastic_lambda is deprecated: use lam_from_dissipation (lambda from the "
+                  "dissipative constant A; lam_from_summary is lambda from e, xi or tau_d)",
+                  DeprecationWarning, stacklevel=2)
+    return lam_from_dissipation(A, rho, m_eff, v0)
 
 
 @dataclass
@@ -153,7 +174,7 @@ class GrainImpact:
     Examples
     --------
     >>> import zener_sym as zs
-    >>> r = zs.grain_impact("1 mm", 1e-5, "glass", A=1e-6, v0="1 m/s")
+    >>> r = zs.grain_impact("glass", "1 mm", 1e-5, A=1e-6, v0="1 m/s")
     >>> r.contact_end, round(r.lam, 4), round(r.e, 4)
     ('force', 0.6355, 0.4079)
     >>> f"{r.contact_duration_s * 1e6:.3f} us"
@@ -194,7 +215,7 @@ class GrainContact:
     Examples
     --------
     >>> from zener_sym.scene.grains import grain_contact
-    >>> c = grain_contact("1 mm", 1e-5, "glass", R2="1 mm", m2=1e-5, material2="glass")
+    >>> c = grain_contact("glass", "1 mm", 1e-5, sphere2="glass", radius2="1 mm", mass2=1e-5)
     >>> c.m_eff, c.R_eff
     (5e-06, 0.0005)
     """
@@ -205,17 +226,20 @@ class GrainContact:
     E_star: float
 
 
-def grain_contact(R1: float | str, m1: float, material1: Material | str, *,
-                  R2: float | str | None = None, m2: float | None = None,
-                  material2: Material | str | None = None,
+@accepts_old_call(("R1", "m1", "material1"),
+                  "grain_contact(sphere, radius, mass, sphere2=..., radius2=..., mass2=..., "
+                  "wall=...)")
+def grain_contact(sphere: Material | str, radius: float | str, mass: float, *,
+                  sphere2: Material | str | None = None, radius2: float | str | None = None,
+                  mass2: float | None = None,
                   wall: Material | str | None = None) -> GrainContact:
-    """m_eff, rho, R_eff and E* of two spheres, or of sphere 1 on a wall (inputs as
+    """m_eff, rho, R_eff and E* of two spheres, or of a sphere on a wall (inputs as
     :func:`grain_impact`, which uses it, as do the inverse and the fit of
     :mod:`zener_sym.scene.calibrate`).
 
     Parameters
     ----------
-    R1, m1, material1, R2, m2, material2, wall
+    sphere, radius, mass, sphere2, radius2, mass2, wall
         As in :func:`grain_impact`.
 
     Returns
@@ -228,21 +252,22 @@ def grain_contact(R1: float | str, m1: float, material1: Material | str, *,
         For a non-positive or non-finite radius or mass, an unknown material, or a half-given
         sphere 2.
     """
-    R1 = si_value(R1, "length", "R1")
-    m1 = _positive(m1, "m1", "kg", "mass of sphere 1")
-    mat1 = get_material(material1)
-    given = [x is not None for x in (R2, m2, material2)]
+    R1 = si_value(radius, "length", "radius")
+    m1 = _positive(mass, "mass", "kg", "mass of the sphere")
+    mat1 = get_material(sphere)
+    given = [x is not None for x in (sphere2, radius2, mass2)]
     if any(given) and not all(given):
-        raise ValueError("sphere 2 needs all of R2, m2 and material2 (leave all out for a wall)")
+        raise ValueError("sphere 2 needs all of sphere2, radius2 and mass2 (leave all out for a "
+                         "wall)")
     if all(given) and wall is not None:
-        raise ValueError("give either sphere 2 (R2, m2, material2) or wall=, not both")
+        raise ValueError("give either sphere 2 (sphere2, radius2, mass2) or wall=, not both")
     inv_E = (1 - mat1.nu**2) / mat1.E
-    if R2 is not None and m2 is not None and material2 is not None:
-        r2 = si_value(R2, "length", "R2")
-        mass2 = _positive(m2, "m2", "kg", "mass of sphere 2")
-        mat2 = get_material(material2)
+    if radius2 is not None and mass2 is not None and sphere2 is not None:
+        r2 = si_value(radius2, "length", "radius2")
+        m2 = _positive(mass2, "mass2", "kg", "mass of sphere 2")
+        mat2 = get_material(sphere2)
         inv_E += (1 - mat2.nu**2) / mat2.E
-        R_eff, m_eff = R1 * r2 / (R1 + r2), m1 * mass2 / (m1 + mass2)
+        R_eff, m_eff = R1 * r2 / (R1 + r2), m1 * m2 / (m1 + m2)
     else:
         if wall is not None:
             w: Material = get_material(wall)
@@ -253,26 +278,29 @@ def grain_contact(R1: float | str, m1: float, material1: Material | str, *,
                         E_star=E_star)
 
 
-def grain_impact(R1: float | str, m1: float, material1: Material | str, A: float,
-                 v0: float | str, *, R2: float | str | None = None, m2: float | None = None,
-                 material2: Material | str | None = None, wall: Material | str | None = None,
-                 contact_end: str = "force", n_history: int = 201) -> GrainImpact:
+@accepts_old_call(("R1", "m1", "material1", "A", "v0"),
+                  "grain_impact(sphere, radius, mass, A=..., v0=..., ...)")
+def grain_impact(sphere: Material | str, radius: float | str, mass: float, *, A: float,
+                 v0: float | str, sphere2: Material | str | None = None,
+                 radius2: float | str | None = None, mass2: float | None = None,
+                 wall: Material | str | None = None, contact_end: str = "force",
+                 n_history: int = 201) -> GrainImpact:
     """Two viscoelastic spheres, or a sphere on a wall, colliding head-on at speed ``v0``.
 
     Parameters
     ----------
-    R1 : float or str
-        Radius of sphere 1 [m], or a string with a unit (e.g. ``"1 mm"``).
-    m1 : float
-        Mass of sphere 1 [kg].
-    material1 : Material or str
-        Its elastic constants (``zener_sym.Material`` or a preset name; the density is not used,
-        the mass is given).
+    sphere : Material or str
+        The sphere's elastic constants (``zener_sym.Material`` or a preset name; the density is
+        not used, the mass is given).
+    radius : float or str
+        Its radius [m], or a string with a unit (e.g. ``"1 mm"``).
+    mass : float
+        Its mass [kg].
     A : float
-        Dissipative constant of the contact [s] (module docstring).
+        Dissipative constant of the contact [s] (module docstring); keyword-only.
     v0 : float or str
-        Normal relative impact speed [m/s] (or a string with a unit).
-    R2, m2, material2 : optional
+        Normal relative impact speed [m/s] (or a string with a unit); keyword-only.
+    sphere2, radius2, mass2 : optional
         Sphere 2. Leave all three out for a wall.
     wall : Material or str, optional
         The wall's material for a sphere on a flat wall (infinite mass and radius); ``None``
@@ -296,11 +324,12 @@ def grain_impact(R1: float | str, m1: float, material1: Material | str, A: float
     Examples
     --------
     >>> import zener_sym as zs
-    >>> r = zs.grain_impact("1 mm", 1e-5, "steel", A=2e-6, v0="2 m/s", R2="1 mm", m2=1e-5,
-    ...                     material2="steel")
+    >>> r = zs.grain_impact("steel", "1 mm", 1e-5, A=2e-6, v0="2 m/s", sphere2="steel",
+    ...                     radius2="1 mm", mass2=1e-5)
     >>> r.criterion.startswith("contact ends where the viscoelastic force")
     True
-    >>> round(r.e, 4), round(r.lam, 4) == round(zs.viscoelastic_lambda(2e-6, r.rho, r.m_eff, 2.0), 4)
+    >>> lam = zs.lam_from_dissipation(2e-6, r.rho, r.m_eff, 2.0)
+    >>> round(r.e, 4), round(r.lam, 4) == round(lam, 4)
     (0.1355, True)
     """
     contact_end = check_contact_end(contact_end)
@@ -308,9 +337,10 @@ def grain_impact(R1: float | str, m1: float, material1: Material | str, A: float
     v0 = si_value(v0, "speed", "v0")
     if isinstance(n_history, bool) or not isinstance(n_history, int) or n_history < 2:
         raise ValueError(f"n_history must be an int >= 2, got {n_history!r}")
-    c = grain_contact(R1, m1, material1, R2=R2, m2=m2, material2=material2, wall=wall)
+    c = grain_contact(sphere, radius, mass, sphere2=sphere2, radius2=radius2, mass2=mass2,
+                      wall=wall)
     m_eff, rho, R_eff, E_star = c.m_eff, c.rho, c.R_eff, c.E_star
-    lam = viscoelastic_lambda(A, rho, m_eff, v0)
+    lam = lam_from_dissipation(A, rho, m_eff, v0)
     if lam > LAMBDA_MAX:
         raise ValueError(f"A = {A!r} s, v0 = {v0!r} m/s with m_eff = {m_eff:.6g} kg and rho = {rho:.6g} "
                          f"N/m^(3/2) give lambda = {lam:.6g}; the exact model accepts "

@@ -1,7 +1,7 @@
 """Lookup tables of the dimensionless summary over a lambda grid, for DEM codes.
 
 A discrete-element code that integrates viscoelastic grains needs e and the contact time for
-each collision; with lambda = A (rho/m_eff)^{2/5} v0^{1/5} (``zener_sym.viscoelastic_lambda``)
+each collision; with lambda = A (rho/m_eff)^{2/5} v0^{1/5} (``zener_sym.lam_from_dissipation``)
 it can interpolate them in a table of e(lambda) and tau_d(lambda) (contact time t_c = T tau_d,
 T = (m_eff/rho)^{2/5} v0^{-1/5}). :func:`lookup_table` computes the table, :func:`lookup_csv`
 writes it; ``zener-sym table`` is the command line.

@@ -4,7 +4,7 @@
     >>> sc = zs.Scene("table1-sphere", "table1-plate", radius=0.9e-3, thickness=0.5e-3, v0=1.0)
     >>> round(sc.lam, 4)
     0.163
-    >>> r = zs.summary(sc, rtol=1e-3)        # cheapest model meeting rtol, with the reason
+    >>> r = sc.result(rtol=1e-3)             # cheapest model meeting rtol, with the reason
     >>> r.model
     'exact'
     >>> round(r.contact_duration_s * 1e6, 3)   # t_d in microseconds
@@ -97,7 +97,7 @@ class Scene:
     >>> sc = zs.Scene("steel", "glass", radius="2.5 mm", thickness="2 mm", drop_height="0.5 m")
     >>> round(sc.v0, 4)                  # sqrt(2 g h)
     3.1316
-    >>> r = sc.summary()
+    >>> r = sc.result()
     >>> round(r.e, 3), round(r.contact_duration_s * 1e6, 2), round(r.max_force_N)
     (0.306, 21.99, 186)
     """
@@ -354,42 +354,46 @@ class Scene:
     # -- results ----------------------------------------------------------------------------
     def summary(self, model: str | None = None, rtol: float = 1e-3, quantity: str = "all",
                 **options: Any) -> SceneResult:
-        """The scene's dimensional result; ``zener_sym.summary(scene, ...)`` calls this.
+        """Deprecated alias of :meth:`result` (it warns, then calls it with ``warn=True``).
 
         Parameters
         ----------
-        model : str, optional
-            A name in ``zener_sym.MODELS``; if omitted, the cheapest model meeting ``rtol``.
-        rtol : float
-            Relative accuracy required when choosing the model.
-        quantity : str
-            The quantity the accuracy is asked for ("all" = every summary field reported).
-        **options
-            Passed to the model.
+        model, rtol, quantity, **options
+            As :meth:`result`.
 
         Returns
         -------
         SceneResult
-            As :meth:`result` with ``warn=True``.
+            As :meth:`result`.
 
         Raises
         ------
         ValueError
             As :meth:`result`.
 
+        Warns
+        -----
+        DeprecationWarning
+            Always: ``Scene.result`` is the one route from a scene to its result.
+
         Examples
         --------
-        >>> import zener_sym as zs
+        >>> import warnings, zener_sym as zs
         >>> sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
-        >>> r = sc.summary(model="hertz")
-        >>> r.model, r.reason, round(r.e, 3)
-        ('hertz', "model 'hertz' requested", 1.0)
+        >>> with warnings.catch_warnings():
+        ...     warnings.simplefilter("ignore", DeprecationWarning)
+        ...     r = sc.summary(model="hertz")
+        >>> r.model
+        'hertz'
         """
+        warnings.warn("Scene.summary() is deprecated: use Scene.result(), the one route from a "
+                      "scene to its result", DeprecationWarning, stacklevel=2)
         return self.result(model=model, rtol=rtol, quantity=quantity, **options)
 
     def result(self, model: str | None = None, rtol: float = 1e-3, quantity: str = "all",
                warn: bool = True, **options: Any) -> SceneResult:
-        """Dimensional results with ``model``, or with the cheapest model meeting ``rtol``.
+        """Dimensional results with ``model``, or with the cheapest model meeting ``rtol``: the
+        one route from a scene to its result.
 
         Parameters
         ----------
@@ -428,6 +432,9 @@ class Scene:
         >>> r = sc.result(rtol=1e-6, quantity="e", warn=False)
         >>> r.model, round(r.e, 6)
         ('series', 0.856623)
+        >>> r = sc.result(model="hertz")
+        >>> r.model, r.reason, round(r.e, 3)
+        ('hertz', "model 'hertz' requested", 1.0)
         >>> round(sc.result(model="exact").e, 6)
         0.856623
         """
@@ -466,7 +473,7 @@ class Scene:
         res.warnings = found
         if warn:
             for code, msg in found:
-                warnings.warn(f"[{code}] {msg}", ZenerWarning, stacklevel=3)
+                warnings.warn(f"[{code}] {msg}", ZenerWarning, stacklevel=2)
         return res
 
 
@@ -510,7 +517,7 @@ class SceneResult:
     Examples
     --------
     >>> import zener_sym as zs
-    >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+    >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
     >>> r.e == r.summary.e, r.rebound_speed_m_s == r.e * r.scene.v0
     (True, True)
     >>> f"{r.contact_duration_s * 1e6:.3f} us"
@@ -565,7 +572,7 @@ class SceneResult:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
         >>> h = r.history([0.0, 5e-6])
         >>> sorted(h)
         ['compression_m', 'deflection_m', 'force_N', 't_s', 'velocity_m_s']
@@ -605,7 +612,7 @@ class SceneResult:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
         >>> F = r.force([0.0, 1e-6, 1e-4])
         >>> [round(float(f), 2) for f in F]
         [0.0, 2.36, 0.0]
@@ -628,7 +635,7 @@ class SceneResult:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
         >>> w_end = float(r.deflection(1e-4))                   # after the contact
         >>> round(w_end / r.final_deflection_m, 9)
         1.0
@@ -651,7 +658,7 @@ class SceneResult:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
         >>> V = r.velocity([0.0, 1e-4])                # -e V0 after the contact
         >>> round(float(V[0]), 6), round(float(V[1]) + r.rebound_speed_m_s, 9)
         (1.0, 0.0)
@@ -670,7 +677,7 @@ class SceneResult:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
         >>> rows = r.table()
         >>> rows[2], rows[11]
         (('radius R', '0.001', 'm'), ('lambda', '0.0907127', '-'))
@@ -712,7 +719,7 @@ class SceneResult:
         Examples
         --------
         >>> import zener_sym as zs
-        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").summary()
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
         >>> for line in r.to_markdown().splitlines()[:3]:
         ...     print(line)
         | quantity | value | unit |

@@ -53,9 +53,9 @@ def test_lammps_force_with_the_lines_constants_is_the_grain_force(kw):
     eta = c.damping(A)
     E_mix = (lammps_E_mix_wall(c.E_lammps, c.nu_lammps) if c.geometry == "wall"
              else lammps_E_mix_pair(c.E_lammps, c.nu_lammps, c.E_lammps, c.nu_lammps))
-    g = zs.grain_impact("1 mm", c.mass1, "glass", A=A, v0=1.0, **(
+    g = zs.grain_impact("glass", "1 mm", c.mass1, A=A, v0=1.0, **(
         dict(wall=kw["wall"]) if "wall" in kw else
-        dict(R2=kw.get("radius2", "1 mm"), m2=c.mass2, material2=kw.get("sphere2", "glass"))))
+        dict(radius2=kw.get("radius2", "1 mm"), mass2=c.mass2, sphere2=kw.get("sphere2", "glass"))))
     assert E_mix == pytest.approx(g.E_star, rel=1e-14)
     for delta, rate in [(1e-7, 0.5), (3e-6, -0.2), (2e-5, 1.3)]:
         F_grain = g.rho * (delta**1.5 + A * 1.5 * math.sqrt(delta) * rate)
@@ -81,7 +81,7 @@ def test_round_trips():
                           dl.derive().expr["lam_of_eta0"])
     eta = c.damping(2.4e-7)
     for v in (0.01, 1.0, 30.0):
-        lam = zs.viscoelastic_lambda(2.4e-7, c.rho, c.m_eff, v)
+        lam = zs.lam_from_dissipation(2.4e-7, c.rho, c.m_eff, v)
         assert lam_eta(eta, c.m_eff, c.E_star, c.R_eff, v) == pytest.approx(lam, rel=1e-13)
 
 
@@ -93,7 +93,7 @@ def test_measured_e_gives_back_that_e_and_the_grain_answers(end):
     assert len(s.table) == 9 and s.table[0]["v_m_s"] == pytest.approx(0.1)
     c = s.contact
     for r in s.table:
-        g = zs.grain_impact("1 mm", c.mass1, "glass", A=s.A_s, v0=r["v_m_s"], wall="steel",
+        g = zs.grain_impact("glass", "1 mm", c.mass1, A=s.A_s, v0=r["v_m_s"], wall="steel",
                             contact_end=end)
         assert r["lambda"] == pytest.approx(g.lam, rel=1e-13)
         assert r["e"] == pytest.approx(g.e, rel=1e-12)

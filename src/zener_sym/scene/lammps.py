@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from ..api import lam_for, summary
+from ..api import lam_from_summary, summary
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
 from ..typing import FloatArray
@@ -162,14 +162,14 @@ def lammps_contact(sphere: Material | str, radius: float | str, *,
     R1 = si_value(radius, "length", "radius")
     m1 = sphere_mass(R1, mat1.rho)
     if wall is not None:
-        c = grain_contact(R1, m1, mat1, wall=get_material(wall))
+        c = grain_contact(mat1, R1, m1, wall=get_material(wall))
         R2 = rho2 = m2 = None
         geometry = "wall"
     else:
         mat2 = get_material(sphere2 if sphere2 is not None else mat1)
         R2 = si_value(radius2 if radius2 is not None else R1, "length", "radius2")
         rho2, m2 = mat2.rho, sphere_mass(R2, mat2.rho)
-        c = grain_contact(R1, m1, mat1, R2=R2, m2=m2, material2=mat2)
+        c = grain_contact(mat1, R1, m1, sphere2=mat2, radius2=R2, mass2=m2)
         geometry = "pair"
     nu = mat1.nu
     return LammpsContact(geometry=geometry, E_star=c.E_star, m_eff=c.m_eff, R_eff=c.R_eff,
@@ -367,7 +367,7 @@ def lammps_setup(sphere: Material | str, radius: float | str, *,
             raise ValueError("e needs the speed it is measured at: give at (e.g. '1 m/s')")
         if isinstance(e, bool) or not isinstance(e, (int, float)) or not 0.0 < float(e) <= 1.0:
             raise ValueError(f"e (coefficient of restitution) must be a number in (0, 1], got {e!r}")
-        lam_e = float(np.asarray(lam_for(e=float(e), contact_end=end)))
+        lam_e = float(np.asarray(lam_from_summary(e=float(e), contact_end=end)))
         A_s = lam_e / float(c.rate(v_at))
     else:
         A_s = si_value(A, "time", "A") if A is not None else 0.0
@@ -377,7 +377,7 @@ def lammps_setup(sphere: Material | str, radius: float | str, *,
     else:
         v = np.array([si_value(x, "speed", "speeds") for x in speeds], dtype=float)
         if v.size == 0:
-            raise ValueError("speeds: give at least one speed")
+            raise ValueError("give at least one speed in speeds")
     eta = c.damping(A_s)
     return LammpsSetup(contact=c, A_s=A_s, damping=eta, contact_end=end, lines=input_lines(c, eta, end),
                        table=_table(c, A_s, v, end))

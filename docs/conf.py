@@ -137,8 +137,9 @@ sphinx_gallery_conf = {
     # only the top level of examples/: examples/c/ holds the C kernels' examples, not gallery scripts
     "ignore_pattern": r"[\\/]c[\\/]|__init__\.py",
     "within_subsection_order": "gallery_order.key",
+    # legends sit outside the axes (the package style): save with bbox_inches="tight"
+    "image_scrapers": ("gallery_scraper.tight",),
     "download_all_examples": False,
-    "image_scrapers": ("matplotlib",),
     "reset_modules": ("matplotlib",),
     "abort_on_example_error": True,
     "only_warn_on_example_error": False,

@@ -154,3 +154,15 @@ def test_mpi_deck_same_e_on_one_and_two_ranks_and_within_the_promise(tmp_path):
     assert np.max(np.abs(cmp.error)) <= 1e-3
     # and the deck's grains did span two decades of speed
     assert deck.v.min() < 0.15 and deck.v.max() > 7.0
+
+
+def test_report_section_runs_the_lines_in_lammps(tmp_path):
+    from zener_sym.report.build import lammps_section
+
+    text = lammps_section(tmp_path)
+    assert "fix wall all wall/gran granular hertz/material" in text
+    rows = [line for line in text.splitlines() if line.startswith("| ") and line.endswith("|")
+            and line.count("|") == 6 and "exact e" not in line]
+    assert len(rows) == 5 and all(line.rstrip(" |").endswith("ok") for line in rows)
+    # each LAMMPS e within the table's tolerance of the exact e
+    assert all(abs(float(line.split("|")[4])) <= 1e-3 for line in rows)

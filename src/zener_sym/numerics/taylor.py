@@ -11,20 +11,25 @@ copy per coefficient.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, Union
 
 import mpmath
+import numpy.typing as npt
 
-__all__ = ["horner", "derivative", "product", "integral", "root"]
+__all__ = ["Coefficients", "horner", "derivative", "product", "integral", "root"]
+
+#: Coefficients c_0 ... c_n: a sequence, or an array whose first axis runs over the powers.
+Coefficients = Union[Sequence[Any], npt.NDArray[Any]]
 
 
-def horner(c: Sequence[Any], s: Any) -> Any:
+def horner(c: Coefficients, s: Any) -> Any:
     """sum_k c_k s^k by Horner's rule.
 
     Parameters
     ----------
-    c : sequence
-        Coefficients c_0 ... c_n, n >= 0 (mpmath numbers, floats, or arrays of one shape).
+    c : sequence or ndarray
+        Coefficients c_0 ... c_n, n >= 0 (mpmath numbers, floats, or arrays of one shape; an
+        array's first axis runs over the powers).
     s : mpmath.mpf, float or ndarray
         The argument.
 

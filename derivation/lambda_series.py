@@ -114,6 +114,9 @@ def _jets_t(d0, v0, lam, N):
     return [d, v]
 
 
+# Horner's rule and the Taylor derivative again (zener_sym.numerics.taylor has them): the
+# derivation is the lowest layer and imports nothing of the package, so that its results stand
+# apart from the code they check.
 def _horner(c, s):
     acc = c[-1]
     for ck in reversed(c[:-1]):

@@ -1,4 +1,6 @@
-"""The package's imports run one way: no cycle, and no layer imports a layer above it.
+"""The package's imports run one way: no cycle, and no layer imports a layer above it. No
+function in src/ is longer than MAX_LINES lines of code, and each shared primitive is defined
+once.
 
 The imports are read from the source with ``ast`` (nothing is imported): module-level and
 function-level ``import``/``from ... import`` statements, and ``importlib.import_module`` calls
@@ -7,7 +9,9 @@ with a literal module name. docs/architecture.md explains the layers.
 from __future__ import annotations
 
 import ast
+import io
 import pathlib
+import tokenize
 
 import pytest
 
@@ -240,3 +244,157 @@ def test_every_package_is_installed():
     src = ROOT / "src"
     found = {".".join(p.parent.relative_to(src).parts) for p in src.rglob("__init__.py")}
     assert found <= listed, f"not in pyproject's packages: {sorted(found - listed)}"
+
+
+# --- functions of readable length -------------------------------------------------------------
+#: Most lines of code in one function of src/ (docstrings, comments and blank lines not counted).
+MAX_LINES = 80
+#: Functions allowed over MAX_LINES for now, with the reason (none: the last, fit_dissipation, was
+#: split when issue 32's API branch merged). The test fails on an entry that is short.
+LENGTH_EXEMPT: dict[str, str] = {}
+
+
+def code_lengths(source: str) -> dict[str, int]:
+    """Qualified name (``Class.method``, ``outer.inner``) -> lines of code of each function in
+    ``source``: lines holding a token other than a comment, minus docstrings (a nested function's
+    lines count in its enclosing one too)."""
+    tree = ast.parse(source)
+    lines: set[int] = set()
+    skip = {tokenize.COMMENT, tokenize.NL, tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT,
+            tokenize.ENDMARKER}
+    for tok in tokenize.generate_tokens(io.StringIO(source).readline):
+        if tok.type not in skip:
+            lines.update(range(tok.start[0], tok.end[0] + 1))
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if (isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+                and body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant)
+                and isinstance(body[0].value.value, str)):
+            lines -= set(range(body[0].lineno, body[0].end_lineno + 1))
+    out: dict[str, int] = {}
+
+    def visit(node: ast.AST, prefix: str) -> None:
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                name = prefix + child.name
+                if not isinstance(child, ast.ClassDef):
+                    out[name] = sum(child.lineno <= n <= child.end_lineno for n in lines)
+                visit(child, name + ".")
+            else:
+                visit(child, prefix)
+
+    visit(tree, "")
+    return out
+
+
+def _src_modules() -> dict:
+    return {m: p for m, p in MODULES.items() if p.is_relative_to(FOLDERS["zener_sym"])}
+
+
+def test_no_function_in_src_is_too_long():
+    lengths = {f"{m}.{f}": n for m, p in _src_modules().items()
+               for f, n in code_lengths(p.read_text(encoding="utf-8")).items()}
+    long = {f: n for f, n in lengths.items() if n > MAX_LINES and f not in LENGTH_EXEMPT}
+    assert not long, f"functions over {MAX_LINES} lines of code (split them): {long}"
+    stale = [f for f in LENGTH_EXEMPT if lengths.get(f, 0) <= MAX_LINES]
+    assert not stale, f"exempt but short (or gone): remove them from LENGTH_EXEMPT: {stale}"
+
+
+def test_length_counts_code_only():
+    src = ('def f(x):\n    """Doc.\n\n    More doc.\n    """\n    # a comment\n\n    y = (x +\n'
+           '         1)\n    return y\n\n\nclass C:\n    def m(self):\n        def g():\n'
+           '            return 1\n        return g\n')
+    assert code_lengths(src) == {"f": 4, "C.m": 4, "C.m.g": 2}
+
+
+# --- each primitive defined once ----------------------------------------------------------------
+#: The shared primitives (issue 32): the one module that defines each, and the names under which
+#: copies of it were once written elsewhere. A function of one of these names defined in any
+#: other module of src/, derivation/ or generated/ is a second copy.
+PRIMITIVES = {
+    "zener_sym.numerics.chebyshev": {"first_kind", "_first_kind", "chebint_matrix",
+                                     "cheb_to_monomial", "_cheb_to_monomial"},
+    "zener_sym.numerics.maps": {"sine_squared", "sine_squared_inverse", "_theta",
+                                "smoothstep", "smoothstep_slope", "smoothstep_inverse"},
+    "zener_sym.numerics.integrate": {"smoothstep_rule"},
+    "zener_sym.numerics.taylor": {"horner", "_horner", "_horner_d", "_horner_np", "derivative",
+                                  "_deriv", "_dpoly", "product", "_mul", "integral", "_integral",
+                                  "root", "_poly_root", "_root_in"},
+}
+#: Copies allowed, with the reason: the derivation is the lowest layer and imports nothing of the
+#: package, so that its results stand apart from the code they check.
+ALLOWED_COPIES = {("zener_sym.derivation.lambda_series", "_horner"),
+                  ("zener_sym.derivation.lambda_series", "_dpoly")}
+
+
+def copies(sources: dict[str, str]) -> list[str]:
+    """``module.name`` of each function defined outside the module that owns its primitive."""
+    owner = {name: m for m, names in PRIMITIVES.items() for name in names}
+    found = []
+    for m, text in sources.items():
+        for node in ast.walk(ast.parse(text)):
+            if (isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+                    and owner.get(node.name, m) != m and (m, node.name) not in ALLOWED_COPIES):
+                found.append(f"{m}.{node.name} (defined in {owner[node.name]})")
+    return found
+
+
+def horner_loops(text: str) -> list[int]:
+    """Lines of Horner loops, ``for c in reversed(...): acc = acc * x + c``, in ``text``."""
+    out = []
+    for node in ast.walk(ast.parse(text)):
+        if not (isinstance(node, ast.For) and isinstance(node.iter, ast.Call)
+                and getattr(node.iter.func, "id", None) == "reversed"):
+            continue
+        for st in node.body:
+            v = getattr(st, "value", None)
+            if (isinstance(st, ast.Assign) and isinstance(v, ast.BinOp) and isinstance(v.op, ast.Add)
+                    and isinstance(v.left, ast.BinOp) and isinstance(v.left.op, ast.Mult)
+                    and ast.unparse(v.left.left) == ast.unparse(st.targets[0])):
+                out.append(st.lineno)
+    return out
+
+
+SOURCES = {m: p.read_text(encoding="utf-8") for m, p in MODULES.items()}
+
+
+def test_each_primitive_is_defined_once():
+    assert not copies(SOURCES), "second copies of shared primitives:\n" + "\n".join(copies(SOURCES))
+    for m, names in PRIMITIVES.items():
+        defined = {n.name for n in ast.walk(ast.parse(SOURCES[m])) if isinstance(n, ast.FunctionDef)}
+        assert defined & names, f"{m} defines none of {sorted(names)}"
+
+
+def test_horner_is_written_once():
+    """Horner's rule as a loop: numerics.taylor.horner, and the derivation's allowed copy
+    (numerics.chebyshev.horner_take gathers each coefficient in place, another loop)."""
+    where = {m for m, text in SOURCES.items() if horner_loops(text)}
+    assert where == {"zener_sym.numerics.taylor", "zener_sym.derivation.lambda_series"}, where
+
+
+def test_chebint_matrix_and_smoothstep_rule_are_built_once():
+    """The Chebyshev integration matrix (chebint of the identity) and the smoothstep-mapped
+    Chebyshev rule (the map's slope at the points) are built in one module each."""
+    chebint = {m for m, t in SOURCES.items() if "chebint(np.eye(" in t.replace(" ", "")
+               or "chebyshev.chebint(np.eye(" in t}
+    assert chebint == {"zener_sym.numerics.chebyshev"}, chebint
+    slope = {m for m, t in SOURCES.items() if "smoothstep_slope(" in t}
+    assert slope <= {"zener_sym.numerics.maps", "zener_sym.numerics.integrate",
+                     "zener_sym.numerics.mp"}, slope
+
+
+def test_mp_reference_fields_are_written_once():
+    """The fields of tests/data/exact_mp_reference.json: listed by the tool that writes the file
+    and read from it by tests/mp_reference.py."""
+    literal = '"delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2"'
+    assert literal in (ROOT / "tools" / "exact_mp_reference.py").read_text(encoding="utf-8")
+    assert literal not in (ROOT / "tests" / "mp_reference.py").read_text(encoding="utf-8")
+
+
+def test_the_copy_checks_can_fail():
+    text = ("def _horner(c, s):\n    acc = c[-1]\n    for ck in reversed(c[:-1]):\n"
+            "        acc = acc * s + ck\n    return acc\n")
+    assert copies({"zener_sym.exact.fake": text}) == [
+        "zener_sym.exact.fake._horner (defined in zener_sym.numerics.taylor)"]
+    assert horner_loops(text) == [4]
+    assert copies({"zener_sym.numerics.taylor": text}) == []

@@ -11,7 +11,9 @@ The rendering check has two parts, both on every math block of the committed fil
    up, and no SymPy or Python syntax (``**``, ``Rational(``, ``sqrt(``, ``I*``, ``Derivative(``)
    appears, in the math or in the prose around it.
 
-A test also shows that the check fails on a broken block, so it cannot pass vacuously.
+A test also shows that the check fails on a broken block, so it cannot pass vacuously. No path of
+the machine a file was written on (a home folder, the paper's transcription) appears in the
+rendered files or anywhere in the source tree.
 """
 from __future__ import annotations
 
@@ -29,6 +31,13 @@ FILES = ("AUDIT.md", "FORMULAS.md")
 #: SymPy or Python syntax (a LaTeX command such as \\exp( or \\sqrt is not matched).
 PYTHON_SYNTAX = (r"\*\*", r"Rational\(", r"(?<!\\)sqrt\(", r"\bI\*", r"I_\*", r"Derivative\(",
                  r"(?<!\\)atan\(", r"\blam\*", r"omega0\*", r"(?<!\\)exp\(")
+
+
+#: A path of the machine a file was written on: home folders, the work folder, the paper's
+#: transcription (the character classes keep this file from matching itself).
+MACHINE_PATH = re.compile(r"/(?:home|Users|root|work)/|[A-Z]:[\\/]Users|shared[/]paper|000[_]0e97")
+#: The folders and files of the source tree that the scan reads (built pages and venvs excluded).
+TREE = ("src", "derivation", "generated", "tests", "tools", "docs", "examples", "benchmarks", ".ci")
 
 
 def _strip_code(text: str) -> str:
@@ -104,9 +113,39 @@ def test_no_python_syntax_cut_text_or_outside_path(name):
     prose = _strip_code(text)
     for s in PYTHON_SYNTAX:
         assert not re.search(s, prose), f"{name} has {s!r}: {re.search(s, prose)}"
-    assert "/work/" not in text and "shared/paper" not in text and "000_0e97" not in text
+    assert not MACHINE_PATH.search(text), MACHINE_PATH.search(text)
     # nothing cut: the old table cut long cells with "..." at the end
     assert not [ln for ln in text.splitlines() if ln.rstrip(" |").endswith("...")]
+
+
+def _tree_files() -> list[Path]:
+    files = [p for p in ROOT.iterdir() if p.is_file() and not p.name.startswith(".")]
+    for top in TREE:
+        files += [p for p in (ROOT / top).rglob("*") if p.is_file()
+                  and not {"_build", "__pycache__", ".venv"} & set(p.relative_to(ROOT).parts)]
+    return files
+
+
+def test_no_machine_path_in_the_source_tree():
+    found = []
+    for path in _tree_files():
+        try:
+            text = path.read_text(encoding="utf-8")
+        except UnicodeDecodeError:  # images and other binary files
+            continue
+        found += [f"{path.relative_to(ROOT)}:{n}: {m.group()}" for n, line in
+                  enumerate(text.splitlines(), 1) if (m := MACHINE_PATH.search(line))]
+    assert not found, "machine paths in the source tree:\n" + "\n".join(found)
+
+
+def test_the_machine_path_check_can_fail():
+    # the samples are assembled, so that this file's own text passes the scan
+    home, work, users, paper = "home", "work", "Users", "shared/" + "paper/000_" + "0e97cc.txt"
+    for line in (f"see /{home}/ann/x.txt", f"# (/{work}/{paper})", f"C:\\{users}\\ann",
+                 f"/{users}/bob/paper.txt", paper):
+        assert MACHINE_PATH.search(line), line
+    assert not MACHINE_PATH.search("src/zener_sym/audit/_raw.py, docs/paper.md")
+    assert len(_tree_files()) > 100  # the scan reads the tree
 
 
 @pytest.mark.parametrize("name", FILES)

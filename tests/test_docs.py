@@ -125,3 +125,13 @@ def test_public_api_has_numpydoc_sections():
             continue
         missing += [f"{name}: {s}" for s in need if f"\n{s}\n" not in "\n" + doc]
     assert not missing, missing
+
+
+def test_ci_runs_the_readmes_test_command():
+    """.ci/run calls the README's install-and-test command verbatim (the README says it is what
+    CI runs), flags included: a change to one without the other fails here."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    commands = re.findall(r"^    (python3 -m venv .*-m pytest.*)$", readme, flags=re.M)
+    assert len(commands) == 1, commands
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()
+    assert commands[0] in ci

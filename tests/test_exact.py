@@ -120,7 +120,8 @@ def test_history_consistent_with_summary():
     assert h.delta[0] == pytest.approx(s.delta_m, rel=1e-11)
     assert abs(h.delta[1]) < 1e-12
     assert h.delta[2] == 0.0 and h.force[2] == 0.0  # past the end of contact
-    assert h.impulse[2] == pytest.approx(s.impulse, rel=1e-13)
+    # (no impulse check here: past the end both are 1 + e by construction; the trapezoid below
+    # is the independent route)
     assert h.velocity[1] == pytest.approx(-s.e, rel=1e-9)
     assert h.delta[3] == pytest.approx(1e-12, rel=1e-6)  # δ ≈ τ at the start
     # the impulse is the integral of the force (Eq. 47): trapezoid on a fine grid
@@ -139,11 +140,14 @@ def test_large_lambda_asymptote(lam):
     assert abs(r - 1) < 0.05
 
 
-def test_large_lambda_identities():
-    s = zs.summary(100.0, model="exact")
+def test_large_lambda_energy_balance():
+    """At lambda = 100 on the scipy path, xi = 2 lambda int F^2 (the state J) against 1 - e^2
+    (e the end velocity, the state w): separate states. (xi = 2 lambda int_F2 itself holds by
+    construction on every path.)"""
+    s = zs.summary(100.0, model="exact", backend="scipy")
     assert 2000 < s.tau_d < 2500
     assert 0 < s.e < 1e-9
-    assert s.xi == pytest.approx(2 * 100.0 * s.int_F2, rel=1e-8)
+    assert s.xi == pytest.approx(1 - s.e**2, rel=1e-8)
 
 
 @settings(max_examples=15, deadline=None)

@@ -160,6 +160,25 @@ def test_evaluation_budget_stops_a_runaway_solve(monkeypatch):
         force_end.solve(1.0)  # the grains' end of contact spends the same budget
 
 
+def test_a_terminal_loading_event_ends_the_contact_in_loading():
+    """The phase driver's rule (phases module docstring): a terminal extra event ends the contact
+    in the phase where it fires, loading included; neither the middle nor unloading runs after
+    it. The grains' contact with a terminal event at u = 0.3 added to loading: one leg, ended by
+    it at u = 0.3 (before the fix the driver went on into the middle)."""
+    lam = 0.5
+    base = force_end.grain_contact(lam)
+    stop = phases.Event("stop", lambda u, y: u - 0.3, 1, True)
+    contact = phases.Contact(base.u_form, base.middle,
+                             {**base.events, "loading": base.extra("loading") + (stop,)})
+    legs = phases.integrate(contact, phases.Settings(lam, 1e-12, 1e-14, "DOP853"))
+    assert [leg.name for leg in legs] == ["loading"]
+    assert legs[0].ended_by == "stop"
+    assert legs[0].end["u"] == pytest.approx(0.3, rel=1e-12)
+    # without the event the same contact runs all three phases
+    full = phases.integrate(base, phases.Settings(lam, 1e-12, 1e-14, "DOP853"))
+    assert [leg.name for leg in full][0] == "loading" and len(full) >= 2
+
+
 def test_force_end_solver_checks_its_own_options():
     for bad in (float("nan"), float("inf"), 0.0, -1e-8, "a", None):
         with pytest.raises(ValueError, match="rtol"):

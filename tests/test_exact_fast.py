@@ -71,7 +71,9 @@ def test_hertz_limit_closed_forms():
     assert s.tau_dc == pytest.approx(1.25**0.4 * beta(0.4, 0.5) / 2.5, rel=1e-12)
 
 
-@pytest.mark.parametrize("lam", [0.0, 0.37, 1.5, 2.71, 4.44, 5.0])
+# 7.3 and 55.0 lie in log pieces of lambda (the maps of the fast evaluation there are checked
+# against the integrator, not against a second reading of the same maps)
+@pytest.mark.parametrize("lam", [0.0, 0.37, 1.5, 2.71, 4.44, 5.0, 7.3, 55.0])
 def test_history_within_documented_bound(lam):
     r = exact.solve(lam, rtol=1e-13)
     tau = np.concatenate([np.linspace(0, r.tau_d * 1.05, 600), [r.tau_dc, 1e-6, r.tau_d * 0.999999]])
@@ -198,56 +200,6 @@ def test_history_is_physical(lam, frac):
     assert np.all(np.diff(h.impulse) >= -1e-12)
     assert np.all(h.impulse <= 1 + s.e + 1e-12)
     assert np.all(h.delta[tau >= s.tau_d] == 0)
-
-
-def _chebyshev_history(lam, tau):
-    """delta and I at (lam, tau) straight from the stored Chebyshev coefficients (chebval2d in
-    (x_time, x_lambda)), with the maps of ``table_build``: the second route to the same table
-    that the fast evaluation (monomials, Horner, scaled maps) must reproduce."""
-    from numpy.polynomial.chebyshev import chebval2d
-
-    s = exact_fast.summary(np.array([lam]))
-    tau_dc, tau_d = s["tau_dc"][0], s["tau_d"][0]
-    edges = np.asarray(build.LAM_PIECES)
-    p = min(int(np.searchsorted(edges, lam, side="right")) - 1, len(edges) - 2)
-    log = build.is_log_piece(edges[p])
-    a, b = (np.log(edges[p]), np.log(edges[p + 1])) if log else (edges[p], edges[p + 1])
-    xl = (2 * (np.log(lam) if log else lam) - a - b) / (b - a)
-    # tau_w0 from the summary table's own field, as the fast path forms it
-    v, _, _ = exact_fast._core(np.array([lam]))
-    tau_w0 = v["tau_w0"][0]
-    tau_s = float(build.LAYOUT.split_time(lam, log, tau_dc, tau_w0))
-    if tau <= tau_dc:
-        piece, y = "C", np.sqrt(tau / tau_dc)
-    elif tau < tau_s:
-        piece = "A"
-    elif tau < tau_w0:
-        piece = "M"
-    else:
-        piece, y = "B", np.sqrt((tau_d - tau) / (tau_d - tau_w0))
-    if piece in "AM":
-        y = table_layout.lin_log(tau, *(float(q) for q in build.LAYOUT.map_params(
-            piece, lam, log, tau_dc, tau_s, tau_w0)))
-    k = build.N_SUB[piece]
-    j = min(int(y * k), k - 1)
-    xt = 2 * (y * k - j) - 1
-    f, imp = (chebval2d(xt, xl, table_layout.parse_array(exact_table.HISTORY[(piece, key)][p][j]))
-              for key in ("f", "I"))
-    pre = {"C": tau, "A": 1.0, "M": 1.0, "B": tau_d - tau}[piece]
-    return pre * np.exp(f), imp
-
-
-@pytest.mark.parametrize("lam", [0.0, 0.61, 2.2, 4.97, 5.0, 7.3, 55.0, 640.0])
-def test_fast_evaluation_reproduces_the_chebyshev_coefficients(lam):
-    """The fast history (monomial coefficients, Horner's rule, per-line map constants) against
-    the stored Chebyshev coefficients summed directly, at times in every time piece."""
-    s = zs.summary(lam, model="exact")
-    tau = np.concatenate([np.linspace(0.0, s.tau_d, 60)[1:-1], [s.tau_dc, 1e-6 * s.tau_d]])
-    h = exact_fast.history(np.full(tau.shape, lam), tau)
-    for t, d, i in zip(tau, h["delta"], h["impulse"]):
-        d_ref, i_ref = _chebyshev_history(lam, t)
-        assert abs(d - d_ref) <= 1e-13 * s.delta_m, (lam, t, d, d_ref)
-        assert abs(i - i_ref) <= 1e-13, (lam, t, i, i_ref)
 
 
 def test_line_and_scattered_evaluation_agree():

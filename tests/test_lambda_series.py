@@ -130,6 +130,20 @@ def test_series_model_refuses_the_middle_and_bad_options():
     assert list(m.valid(np.array([0.1, 1.0, 40.0, 1000.0]))) == [True, False, True, True]
 
 
+def test_series_coefficients_are_read_only():
+    """coefficients() hands every caller the same cached arrays: a write raises instead of
+    changing every later answer, and replacing an entry of the returned dict changes nothing."""
+    lam = np.array([0.1, 0.2])
+    before = series_model.SeriesModel()._summary(lam)["e"].copy()
+    c = series_model.coefficients()
+    with pytest.raises(ValueError, match="read-only"):
+        c["small"]["e_delta"][1] = 0.0
+    c["small"]["e_delta"] = np.zeros(3)
+    again = series_model.coefficients()["small"]["e_delta"]
+    assert again[0] == 1.0 and again[1] == float(DATA["small"]["e_delta"]["c"][1])
+    assert np.array_equal(series_model.SeriesModel()._summary(lam)["e"], before)
+
+
 @pytest.mark.slow
 def test_derivation_passes_and_committed_coefficients_are_fresh():
     """The committed data/lambda_series.json is what the derivation writes (regenerate:

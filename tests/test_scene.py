@@ -17,9 +17,23 @@ def res():
         return sc.result(rtol=1e-3)
 
 
-def test_identities(res):
+@pytest.fixture(scope="module")
+def res_scipy():
+    """The same scene integrated (backend "scipy"), where e and xi are separate states."""
+    return zs.summary(zs.Scene("steel", "aluminium", 1e-3, 1e-3, 2.0), model="exact",
+                      backend="scipy")
+
+
+def test_identities(res_scipy):
+    """The SI scaling, on the scipy path. Dimensionless, F_m = delta_m^{3/2} and impulse = 1 + e
+    hold by construction on every path (each forms F_m from delta_m and the impulse from the end
+    velocity), so the two asserts below check the scene's scales K and alpha m1 V0. The energy
+    balance compares separate states: here xi >= 1/2, where e is the integrated end velocity and
+    xi = 2 lambda int F^2 (on the tables' path and below xi = 1/2, e comes from xi)."""
+    res = res_scipy
     sc = res.scene
-    assert res.xi == pytest.approx(1 - res.e**2, rel=1e-12)
+    assert res.xi >= 0.5
+    assert res.xi == pytest.approx(1 - res.e**2, rel=1e-10)
     # Hertz: F_m = K delta_m^{3/2} with K = (4/3) E* sqrt(R)
     K = 4 / 3 * sc.E_star * np.sqrt(sc.radius)
     assert res.max_force_N == pytest.approx(K * res.max_compression_m**1.5, rel=1e-12)

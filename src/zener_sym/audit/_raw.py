@@ -1,5 +1,5 @@
 # Raw printed text of the numbered equations, copied verbatim from the paper's transcription
-# (/work/shared/paper/000_0e97ccb4d495d596.txt). Data only; generated once by a script that
+# (a text file of the paper, outside this repository). Data only; generated once by a script that
 # extracts each $$...$$ block with a tag, then committed (the paper does not change).
 RAW_EQUATIONS = {
     '1': '\\frac{d^2\\delta}{dt^2} + k_c\\delta^3 = 0 \\quad (1)',

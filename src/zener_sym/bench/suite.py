@@ -3,6 +3,7 @@ speed targets, and a BENCHMARKS.md summarising them."""
 from __future__ import annotations
 
 import csv
+import os
 import pathlib
 import platform
 import time
@@ -60,26 +61,55 @@ def run(out: pathlib.Path, quick: bool = False, log: Callable[[str], object] = p
             w.writeheader()
             w.writerows(tg)
     elapsed = time.perf_counter() - t_start
+    header = (f"Produced by `zener-sym bench{' --quick' if quick else ''} --out {out}` in "
+              f"{elapsed:.0f} s on {platform.machine()} / Python {platform.python_version()} "
+              f"({len(cat)} methods). Errors are against {ref['source']} at lambda = "
+              f"{', '.join(f'{x:g}' for x in ref['lambdas'])} ({ref['n_tau']} history points "
+              "each).")
+    text = _markdown(header, rows, charts, stability.summary_rows(stab, lams), quiet, tg)
+    (out / "BENCHMARKS.md").write_text(text)
+    if markdown is not None:
+        _write_copy(text, out, markdown)
+    log(f"wrote {out}/BENCHMARKS.md, charts and CSV tables in {elapsed:.0f} s")
+    return text
 
+
+def _best_rows(rows: Sequence[workprecision.WorkRow]) -> list[dict[str, object]]:
+    """The most accurate successful row per (family, quantity), as table rows."""
     best: dict[tuple[str, str], workprecision.WorkRow] = {}
     for r in rows:
         if r["status"] == "ok" and np.isfinite(r["max_rel_error"]):
             key = (r["family"], r["quantity"])
             if key not in best or r["max_rel_error"] < best[key]["max_rel_error"]:
                 best[key] = r
-    q_rows = []
-    for (fam, q), r in sorted(best.items()):
-        q_rows.append({"family": fam, "quantity": q, "best error": f"{r['max_rel_error']:.2e}",
-                       "lambdas": r["lambdas"],
-                       "at (method)": r["method"], "s per lambda": f"{r['seconds_per_lambda']:.2e}"})
+    return [{"family": fam, "quantity": q, "best error": f"{r['max_rel_error']:.2e}",
+             "lambdas": r["lambdas"], "at (method)": r["method"],
+             "s per lambda": f"{r['seconds_per_lambda']:.2e}"}
+            for (fam, q), r in sorted(best.items())]
+
+
+def _targets_table(tg: Sequence[Mapping[str, object]]) -> str:
+    """The speed targets as a markdown table (or why there is none)."""
+    if not tg:
+        return "no target applies yet (the models they compare are not registered)"
+    return _md_table(["target", "grid", "fast_s", "slow_s", "ratio", "required", "met"],
+                     [{**r, "fast_s": f"{r['fast_s']:.3g}", "slow_s": f"{r['slow_s']:.3g}",
+                       "ratio": f"{r['ratio']:.3g}",
+                       # a row with required None is shown beside the targets, not judged
+                       "required": "—" if r["required"] is None else r["required"],
+                       "met": "—" if r["met"] is None else ("yes" if r["met"] else "no")}
+                      for r in tg])
+
+
+def _markdown(header: str, rows: Sequence[workprecision.WorkRow], charts: Sequence[pathlib.Path],
+              stability_rows: Sequence[Mapping[str, object]], quiet: Sequence[str],
+              tg: Sequence[Mapping[str, object]]) -> str:
+    """The text of BENCHMARKS.md."""
     failed = [r for r in rows if r["status"] != "ok"]
     md = [
         "# Benchmarks: speed against accuracy",
         "",
-        f"Produced by `zener-sym bench{' --quick' if quick else ''} --out {out}` in {elapsed:.0f} s "
-        f"on {platform.machine()} / Python {platform.python_version()} "
-        f"({len(cat)} methods). Errors are against {ref['source']} at lambda = "
-        f"{', '.join(f'{x:g}' for x in ref['lambdas'])} ({ref['n_tau']} history points each).",
+        header,
         "",
         "Time: the first call gives the values and warms up; when it took less than 0.3 s "
         "(0.05 s with --quick), further calls are timed until that much time has passed and the "
@@ -95,7 +125,7 @@ def run(out: pathlib.Path, quick: bool = False, log: Callable[[str], object] = p
         "## Best accuracy reached per method family",
         "",
         _md_table(["family", "quantity", "best error", "lambdas", "at (method)", "s per lambda"],
-                  q_rows),
+                  _best_rows(rows)),
         "",
         "(`lambdas`: how many of the reference lambda values the error is over; a model valid "
         "only below some lambda is measured below it.)",
@@ -116,28 +146,19 @@ def run(out: pathlib.Path, quick: bool = False, log: Callable[[str], object] = p
         "contact; `refused` = a ValueError from the API, the intended answer outside a model's "
         "validity):",
         "",
-        _md_table(["method"] + list(stability.CLASSES[1:]), stability.summary_rows(stab, lams)),
+        _md_table(["method"] + list(stability.CLASSES[1:]), stability_rows),
         "",
         "## Speed targets (ratios measured side by side in this run)",
         "",
-        (_md_table(["target", "grid", "fast_s", "slow_s", "ratio", "required", "met"],
-                   [{**r, "fast_s": f"{r['fast_s']:.3g}", "slow_s": f"{r['slow_s']:.3g}",
-                     "ratio": f"{r['ratio']:.3g}",
-                     # a row with required None is shown beside the targets, not judged
-                     "required": "—" if r["required"] is None else r["required"],
-                     "met": "—" if r["met"] is None else ("yes" if r["met"] else "no")}
-                    for r in tg])
-         if tg else "no target applies yet (the models they compare are not registered)"),
+        _targets_table(tg),
         "",
     ]
-    text = "\n".join(md)
-    (out / "BENCHMARKS.md").write_text(text)
-    if markdown is not None:  # a copy elsewhere (e.g. the repo root), images linked relative to it
-        import os
+    return "\n".join(md)
 
-        rel = pathlib.Path(os.path.relpath(out.resolve(), markdown.resolve().parent))
-        linked = text.replace("](work_precision_", f"]({rel.as_posix()}/work_precision_")
-        linked = linked.replace("](stability.png)", f"]({rel.as_posix()}/stability.png)")
-        markdown.write_text(linked)
-    log(f"wrote {out}/BENCHMARKS.md, charts and CSV tables in {elapsed:.0f} s")
-    return text
+
+def _write_copy(text: str, out: pathlib.Path, markdown: pathlib.Path) -> None:
+    """A copy of BENCHMARKS.md elsewhere (e.g. the repo root), images linked relative to it."""
+    rel = pathlib.Path(os.path.relpath(out.resolve(), markdown.resolve().parent))
+    linked = text.replace("](work_precision_", f"]({rel.as_posix()}/work_precision_")
+    linked = linked.replace("](stability.png)", f"]({rel.as_posix()}/stability.png)")
+    markdown.write_text(linked)

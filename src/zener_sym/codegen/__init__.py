@@ -75,8 +75,8 @@ def inputs_hash(files: Iterable[str | pathlib.Path] | None = None) -> str:
     Parameters
     ----------
     files : iterable of str or pathlib.Path, optional
-        The input files, in the order they are hashed; default: ``derivation/*.py`` then
-        ``codegen/*.py``, each sorted.
+        The input files, in the order they are hashed; default: ``derivation/*.py``, then
+        ``codegen/*.py`` and ``codegen/*.json`` (the kernels' docstrings), each sorted.
 
     Returns
     -------
@@ -90,8 +90,9 @@ def inputs_hash(files: Iterable[str | pathlib.Path] | None = None) -> str:
     16
     """
     if files is None:
-        files = (sorted(derivation_dir().glob("*.py"))
-                 + sorted(pathlib.Path(__file__).parent.glob("*.py")))
+        here = pathlib.Path(__file__).parent
+        files = (sorted(derivation_dir().glob("*.py")) + sorted(here.glob("*.py"))
+                 + sorted(here.glob("*.json")))
     h = hashlib.sha256()
     for f in map(pathlib.Path, files):
         h.update(f.name.encode())

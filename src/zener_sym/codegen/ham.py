@@ -18,8 +18,11 @@ nothing is printed from an unordered container.
 """
 from __future__ import annotations
 
+import functools
+import json
 import textwrap
 from collections.abc import Sequence
+from importlib import resources
 from typing import Any, NamedTuple
 
 import sympy as sp
@@ -215,165 +218,23 @@ def _lam_crit_data(e: dict[str, Any], lam_crit: Any, with_float: bool) -> str:
     return "\n".join(lines) + "\n"
 
 
-# doctest lines shared by the examples
-_NP = ">>> from zener_sym.ham.xp import NUMPY"
-_MP = ">>> from zener_sym.ham.xp import MPMATH"
-_H0 = ">>> from zener_sym.generated.ham0 import delta0, params"
-_K_OF = (">>> from zener_sym.numerics.sqrt_integrals import sqrt_integrals",
-         ">>> lam, tau = 0.5, 1.0",
-         ">>> k, beta, omega0 = params(NUMPY, lam)",
-         ">>> K = sqrt_integrals(a_first(NUMPY, beta, omega0), omega0 * tau, (\"cc\", \"sc\", \"ss\"))",
-         ">>> Kcc, Ksc, Kss = K[\"cc\"], K[\"sc\"], K[\"ss\"]")
-_K0 = "0.0, 0.0, 0.0"  # the K integrals at tau = 0
+@functools.cache
+def _docs(module: str) -> dict[str, _Doc]:
+    """Docstrings of the functions of generated/``module``.py ("ham0" or "ham1").
 
+    Text, so it lives in the package data file ham_docs.json: per function its summary line,
+    paragraph, Returns entries and Examples' doctest lines, where a line "@NAME" stands for the
+    lines of the file's ``snippets[NAME]`` (shared imports and set-ups).
+    """
+    raw = json.loads((resources.files(__package__) / "ham_docs.json").read_text("utf-8"))
+    snippets: dict[str, list[str]] = raw["snippets"]
 
-def _zeroth_docs() -> dict[str, _Doc]:
-    """Docstrings of generated/ham0.py's functions."""
-    f = _FLOATS
-    return {
-        "params": _Doc(
-            "The coefficients k (25), beta (32) and omega0 (33) of the zeroth-order operator.",
-            "The auxiliary linear operator (12) is delta'' + k lambda delta' + k delta, with roots "
-            "-beta +- i omega0; k = (lambda + delta_m(0)^(-3/2))^(-1/3) with delta_m(0) = "
-            "(5/4)^(2/5), the elastic maximum compression (23).",
-            [("k", f, "The coefficient k (25) of the auxiliary operator, > 0."),
-             ("beta", f, "The decay rate beta = k lambda / 2 (32)."),
-             ("omega0", f, "The frequency omega0 = sqrt(4 k - k^2 lambda^2) / 2 (33), real "
-              "below LAM_CRIT.")],
-            [_NP, ">>> k, beta, omega0 = params(NUMPY, 0.0)",
-             ">>> bool(abs(k - 1.25 ** 0.2) < 1e-15), float(beta)  # elastic: k = delta_m(0)^(1/2)",
-             "(True, 0.0)", ">>> k, beta, omega0 = params(NUMPY, 1.0)",
-             ">>> bool(abs(beta ** 2 + omega0 ** 2 - k) < 1e-15)  # |root|^2 = k",
-             "True"]),
-        "delta0": _Doc(
-            "Zeroth-order compression delta0 (35), continued analytically (no clipping).",
-            "delta0 = exp(-beta tau) sin(omega0 tau) / omega0 solves the auxiliary linear "
-            "equation (28) with delta0(0) = 0, delta0'(0) = 1 (29); it is negative past "
-            "tau = pi / omega0, the end of the zeroth-order contact (54).",
-            [("delta0", f, "The compression delta0 at ``tau``.")],
-            [_NP, ">>> k, beta, omega0 = params(NUMPY, 0.0)",
-             ">>> tau = NUMPY.pi / (2 * omega0)  # the maximum when lambda = 0",
-             ">>> bool(abs(delta0(NUMPY, tau, 0.0, beta, omega0) - 1 / omega0) < 1e-15)",
-             "True"]),
-        "delta0_dot": _Doc(
-            "Zeroth-order relative velocity delta0' (56).",
-            "d/dtau of delta0 (35), continued analytically like it.",
-            [("delta0_dot", f, "The velocity delta0' at ``tau``.")],
-            [_NP, ">>> k, beta, omega0 = params(NUMPY, 1.0)",
-             ">>> round(float(delta0_dot(NUMPY, 0.0, 1.0, beta, omega0)), 15)  # (29): delta0'(0) = 1",
-             "1.0"]),
-        "delta_contact": _Doc(
-            "The compression delta0 (35) on the zeroth-order contact, 0 after it (54).",
-            "Its sine is printed as the first half wave ``xp.half_wave_sin`` (sin on [0, pi], 0 "
-            "beyond), so the compression is 0 from omega0 tau = pi on; the NUMPY namespace only.",
-            [("delta", f, "The compression delta0 at ``tau`` on the contact, 0 after it.")],
-            [">>> import numpy as np", _NP, ">>> k, beta, omega0 = params(NUMPY, 1.0)",
-             ">>> tau = np.array([0.3, 1.5]) * np.pi / omega0  # on the contact, after it",
-             ">>> d = delta_contact(NUMPY, tau, 1.0, beta, omega0)",
-             ">>> bool(abs(d[0] - delta0(NUMPY, tau[0], 1.0, beta, omega0)) < 1e-15), float(d[1])",
-             "(True, 0.0)"]),
-        "a_impulse": _Doc(
-            "Decay rate a = 3 beta / (2 omega0) of K_s in the impulse (47).",
-            "delta0^(3/2) = omega0^(-3/2) exp(-a omega0 tau) sin(omega0 tau)^(3/2).",
-            [("a_imp", f, "The rate a of ``Ks`` in :func:`impulse`.")],
-            [_NP, ">>> float(a_impulse(NUMPY, 1.0, 2.0))", "0.75"]),
-        "impulse": _Doc(
-            "Zeroth-order impulse (47), omega0^(-5/2) K_s.",
-            "The integral of the contact force delta0^(3/2) from 0 to tau, with K_s at "
-            "a = a_impulse(beta, omega0) and theta = min(omega0 tau, pi).",
-            [("impulse", f, "The impulse up to ``tau``.")],
-            [_NP, ">>> from math import gamma, pi, sqrt",
-             ">>> Ks = sqrt(pi) * gamma(1.25) / gamma(1.75)  # int_0^pi sin^(3/2) t dt (a = 0)",
-             ">>> k, beta, omega0 = params(NUMPY, 0.0)",
-             ">>> round(float(impulse(NUMPY, omega0, Ks)), 12)  # lambda = 0: the whole contact",
-             "1.653192620197"]),
-        "summary": _Doc(
-            "Zeroth-order closed forms of one impact.",
-            "tau_d (54), tau_dc (58), tau_dr (60), eta (61), e (79), delta_m = delta0(tau_dc), "
-            "the integral of F^2 = delta0^3 over the contact, and the rate a_imp of the "
-            "impulse (47).",
-            [("summary", "dict", "Keys ``tau_d``, ``tau_dc``, ``tau_dr``, ``eta``, ``e``, "
-              "``delta_m``, ``int_F2``, ``a_imp``; values of the shape of ``beta``.")],
-            [_NP, ">>> k, beta, omega0 = params(NUMPY, 0.0)",
-             ">>> s = summary(NUMPY, beta, omega0)",
-             ">>> float(s[\"e\"]), float(s[\"eta\"])  # elastic: e = 1, symmetric contact",
-             "(1.0, 1.0)",
-             ">>> bool(abs(s[\"tau_d\"] - NUMPY.pi / omega0) < 1e-15)", "True"]),
-        "J_pi": _Doc(
-            "J_m(a, pi) by Gauss's theorem (Gamma functions).",
-            "J_m(a, theta) = int_0^theta exp((-a + i m) t) sqrt(sin t) dt at theta = pi, the "
-            "value the K integrals (36) freeze at; needs ``xp.gamma`` (the MPMATH namespace).",
-            [("J", "complex", "J_m(a, pi) (an mpc).")],
-            [_MP, ">>> from math import gamma, pi, sqrt",
-             ">>> J = complex(J_pi(MPMATH, 0, 0))",
-             ">>> bool(abs(J - sqrt(pi) * gamma(0.75) / gamma(1.25)) < 1e-13)  # Beta(3/4, 1/2)",
-             "True"]),
-        "J_theta": _Doc(
-            "J_m(a, theta) by its 2F1 closed form, 0 < theta < pi.",
-            "J_m(a, theta) = int_0^theta exp((-a + i m) t) sqrt(sin t) dt, from which the "
-            "square-root integrals K (36) are formed; needs ``xp.hyper`` and ``xp.gamma`` (the "
-            "MPMATH namespace).",
-            [("J", "complex", "J_m(a, theta) (an mpc).")],
-            [_MP, ">>> J = complex(J_theta(MPMATH, 0, 0, MPMATH.pi / 2))",
-             ">>> half = complex(J_pi(MPMATH, 0, 0)) / 2  # sqrt(sin t) is symmetric about pi/2",
-             ">>> bool(abs(J - half) < 1e-13)", "True"]),
-    }
+    def lines(examples: list[str]) -> list[str]:
+        return [ln for x in examples for ln in (snippets[x[1:]] if x.startswith("@") else [x])]
 
-
-def _first_docs() -> dict[str, _Doc]:
-    """Docstrings of generated/ham1.py's functions."""
-    f = _FLOATS
-    return {
-        "a_first": _Doc(
-            "Decay rate a = beta / (2 omega0) of the square-root integrals K (36).",
-            "sqrt(delta0) = omega0^(-1/2) exp(-a omega0 tau) sqrt(sin(omega0 tau)).",
-            [("a", f, "The rate a of ``Kcc``, ``Ksc``, ``Kss``.")],
-            [_NP, ">>> float(a_first(NUMPY, 1.0, 2.0))", "0.25"]),
-        "delta1": _Doc(
-            "First-order correction delta1 (37)-(42).",
-            "The variation-of-constants solution of the first-order deformation equation (30) "
-            "with zero initial data (31): an elementary part and the square-root part through "
-            "K_cc, K_sc, K_ss (36).",
-            [("delta1", f, "The correction delta1 at ``tau``.")],
-            [_NP, _H0, ">>> k, beta, omega0 = params(NUMPY, 0.5)",
-             f">>> float(delta1(NUMPY, 0.0, 0.5, beta, omega0, {_K0}))  # (31): delta1(0) = 0",
-             "0.0"]),
-        "delta": _Doc(
-            "First-order HAM compression delta0 + delta1 (42).",
-            "Printed whole, not as the sum of two calls, so that it keeps its bits; on the "
-            "zeroth-order contact (K frozen at theta = pi beyond it: the continuation).",
-            [("delta", f, "The compression delta0 + delta1 at ``tau``.")],
-            [_NP, _H0, *_K_OF,
-             ">>> d = delta(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
-             ">>> d1 = delta1(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
-             ">>> bool(abs(d - delta0(NUMPY, tau, lam, beta, omega0) - d1) < 1e-15)", "True"]),
-        "delta_dot": _Doc(
-            "Relative velocity d/dtau (delta0 + delta1) of the first-order solution (42).",
-            "The C' terms of (37) cancel by Eq. (38), so it has the form of delta with "
-            "differentiated trigonometric factors.",
-            [("delta_dot", f, "The velocity at ``tau``.")],
-            [_NP, _H0, ">>> k, beta, omega0 = params(NUMPY, 0.5)",
-             f">>> v = delta_dot(NUMPY, 0.0, 0.5, beta, omega0, {_K0})",
-             ">>> bool(abs(v - 1.0) < 1e-15)  # (29), (31): delta'(0) = 1 + 0", "True"]),
-        "delta_scaled": _Doc(
-            "The product exp(beta tau) (delta0 + delta1): the sign of delta (42) without underflow.",
-            "The exponentials merged into the terms: root finding on the end of contact uses it.",
-            [("delta_scaled", f, "The product exp(beta tau) delta at ``tau``.")],
-            [_NP, ">>> from math import exp", _H0, *_K_OF,
-             ">>> d = delta(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
-             ">>> ds = delta_scaled(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
-             ">>> bool(abs(ds - exp(beta * tau) * d) < 1e-15)", "True"]),
-        "delta_dot_scaled": _Doc(
-            "The product exp(beta tau) d/dtau (delta0 + delta1): the sign of delta' (42) without "
-            "underflow.",
-            "The exponentials merged into the terms: root finding on the end of compression uses "
-            "it.",
-            [("delta_dot_scaled", f, "The product exp(beta tau) delta' at ``tau``.")],
-            [_NP, ">>> from math import exp", _H0, *_K_OF,
-             ">>> v = delta_dot(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
-             ">>> vs = delta_dot_scaled(NUMPY, tau, lam, beta, omega0, Kcc, Ksc, Kss)",
-             ">>> bool(abs(vs - exp(beta * tau) * v) < 1e-15)", "True"]),
-    }
+    return {name: _Doc(d["summary"], d["extended"], [tuple(r) for r in d["returns"]],
+                       lines(d["examples"]))
+            for name, d in raw[module].items()}
 
 
 def _zeroth(p: Any, e: dict[str, Any]) -> str:
@@ -384,7 +245,7 @@ def _zeroth(p: Any, e: dict[str, Any]) -> str:
     sines = e["delta0"].atoms(sp.sin)
     if len(sines) != 1 or next(iter(sines)).args[0] != Y["omega0"] * Y["tau"]:
         raise ValueError(f"delta_contact expects one sine of omega0*tau in delta0, got {sines}")
-    d = _zeroth_docs()
+    d = _docs("ham0")
     text = _function(p, "params", ("lam",), d["params"], _params_outputs(e))
     text += _function(p, "delta0", _CONTACT, d["delta0"], [("out", e["delta0"])], "out")
     text += _function(p, "delta0_dot", _CONTACT, d["delta0_dot"], [("out", e["delta0_dot"])],
@@ -409,7 +270,7 @@ def _first(p: Any, e: dict[str, Any]) -> str:
     scaled forms the numpy root finding uses."""
     dd0 = e["delta0"] + e["delta1"]
     ddd = e["delta0_dot"] + e["delta1_dot"]
-    d = _first_docs()
+    d = _docs("ham1")
     text = _function(p, "a_first", ("beta", "omega0"), d["a_first"], [("a", e["a_first"])])
     text += _function(p, "delta1", _WITH_K, d["delta1"], [("out", e["delta1"])], "out")
     # printed whole, not as delta0() + delta1(): that sum rounds differently (up to 4e-16 in

@@ -117,7 +117,17 @@ def ham_expressions() -> dict[str, Any]:
     """
     reg = _from_registry()
     e: dict[str, Any] = {}
-    th = omega0 * tau
+    _k_and_roots(reg, e)
+    d0 = _zeroth_order(reg, e)
+    f_elem = _forcing(reg, e, d0)
+    _first_order(e, f_elem)
+    _j_closed_forms(e)
+    return e
+
+
+# The sections of ham_expressions: each adds its names to ``e`` in the order the generated files
+# print them, and checks what it takes from the registry.
+def _k_and_roots(reg: dict[str, Any], e: dict[str, Any]) -> None:
     # --- (23)-(25): k(lambda); local route: delta_m(0) from the energy integral (22) ----------------
     dm0 = sp.Rational(5, 4) ** sp.Rational(2, 5)
     _check("(23) y(delta_m(0)) = 0", _zero(1 - sp.Rational(4, 5) * dm0 ** sp.Rational(5, 2)))
@@ -134,6 +144,10 @@ def ham_expressions() -> dict[str, Any]:
     e["lam_crit"] = reg["lam_crit"]
     _check("(81) lam_crit solves k lam^2 = 4",
            abs(sp.N(((4 - k * lam**2).subs(k, e["k_of_lam"])).subs(lam, e["lam_crit"]), 45)) < 1e-38)
+
+
+def _zeroth_order(reg: dict[str, Any], e: dict[str, Any]) -> Any:
+    """delta0 and the zeroth-order closed forms; returns delta0."""
     # --- (35): delta0, verified against (28)-(29) ---------------------------------------------------
     kk = beta**2 + omega0**2  # k in terms of beta, omega0
     d0 = reg["delta0"]
@@ -171,6 +185,13 @@ def ham_expressions() -> dict[str, Any]:
     # zeroth-order impulse: int_0^tau delta0^{3/2} = omega0^{-5/2} K_s(3 beta/(2 omega0), theta)
     e["impulse0"] = omega0 ** sp.Rational(-5, 2) * Ks
     e["a_impulse0"] = 3 * beta / (2 * omega0)
+    return d0
+
+
+def _forcing(reg: dict[str, Any], e: dict[str, Any], d0: Any) -> Any:
+    """The forcing (36) and its sqrt part's coefficients c1, c2; returns the elementary part."""
+    th = omega0 * tau
+    d0d, d0dd = sp.diff(d0, tau), sp.diff(d0, tau, 2)
     # --- (36): forcing; local route by substitution into N, compared with the registry's ------------
     sqrt_d0 = omega0 ** sp.Rational(-1, 2) * sp.exp(-beta * tau / 2) * S
     f_local = sp.expand(-(d0dd + sp.Rational(3, 2) * lam * sqrt_d0 * d0d + d0 * sqrt_d0))
@@ -188,6 +209,15 @@ def ham_expressions() -> dict[str, Any]:
     _check("(36) sqrt part = exp(-3 beta tau/2) (c1 cos + c2 sin) sqrt(sin)",
            _zero(g - c1 * sp.cos(th) - c2 * sp.sin(th)) and not (c1.has(tau) or c2.has(tau)))
     e["c1"], e["c2"] = c1, c2
+    return f_elem
+
+
+def _first_order(e: dict[str, Any], f_elem: Any) -> None:
+    """delta1 and delta1' (37)-(42): the elementary part checked against (30)-(31), the sqrt part
+    through the K integrals."""
+    th = omega0 * tau
+    kk = beta**2 + omega0**2
+    c1, c2 = e["c1"], e["c2"]
     # --- (37)-(42): elementary part of delta1, proposed in a stable form and verified ---------------
     # It is the convolution (1/omega0) int_0^tau exp(-beta(tau-s)) sin(omega0(tau-s)) f_elem(s) ds, i.e.
     # the solution of L[delta] = f_elem with zero initial data (30)-(31): check exactly that.
@@ -215,6 +245,10 @@ def ham_expressions() -> dict[str, Any]:
     e["delta1"] = d1e_stable + d1s
     e["delta1_dot"] = d1ed_stable + d1sd
     e["delta1_sqrt"], e["delta1_elem"] = d1s, d1e_stable
+
+
+def _j_closed_forms(e: dict[str, Any]) -> None:
+    """The 2F1 closed forms of J_m for the mpmath kernels."""
     # --- closed forms of J_m for the mpmath kernels ---------------------------------------------------
     c = -a_ + sp.I * (m_ - sp.Rational(1, 2))
     sJ = c / (2 * sp.I)
@@ -226,4 +260,3 @@ def ham_expressions() -> dict[str, Any]:
     F_pi = sp.exp(c * sp.pi) * gauss1 / sJ
     e["J_theta"] = pref * (F_theta - F_0)
     e["J_pi"] = pref * (F_pi - F_0)
-    return e

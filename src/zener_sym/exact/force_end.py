@@ -39,7 +39,6 @@ Two independent paths, as for the plate:
 """
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -47,6 +46,7 @@ import mpmath
 import numpy as np
 
 from .. import params
+from ..numerics.taylor import derivative, horner, integral, product, root
 from ..typing import FloatArray, RealArrayLike, RealLike
 from . import mp, solver
 from .phases import Contact, Event, Form, Leg, Settings, Terms, Value, integrate, positive
@@ -305,55 +305,15 @@ def solve(lam: float, rtol: float = 1e-13, atol: float = 1e-16, method: str = "D
 
 # --- mpmath path -----------------------------------------------------------------------------
 
-def _deriv(c: Sequence[Any]) -> list[Any]:
-    return [k * c[k] for k in range(1, len(c))]
-
-
-def _mul(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
-    out = [mpmath.mpf(0)] * (len(a) + len(b) - 1)
-    for i, x in enumerate(a):
-        if x:
-            for j, y in enumerate(b):
-                out[i + j] += x * y
-    return out
-
-
-def _integral(c: Sequence[Any], s: Any) -> Any:
-    """int_0^s sum c_k x^k dx."""
-    return mpmath.fsum(ck * s ** (k + 1) / (k + 1) for k, ck in enumerate(c))
-
-
 def _fc_poly(ph: Any, st: Any, lam: Any) -> tuple[list[Any], list[Any]]:
     """F_c on one Taylor step as a polynomial in s, and dtau/ds (1 on tau steps)."""
     if ph.kind == "tau":  # F_c = -v'
-        return [-x for x in _deriv(st.c[1])], [mpmath.mpf(1)]
+        return [-x for x in derivative(st.c[1])], [mpmath.mpf(1)]
     u = [st.x0, mpmath.mpf(1)]  # u = x0 + s
-    u3 = _mul(_mul(u, u), u)
-    fc = _mul(u, [mpmath.mpf(3) / 2 * lam * x for x in st.c[1]])
+    u3 = product(product(u, u), u)
+    fc = product(u, [mpmath.mpf(3) / 2 * lam * x for x in st.c[1]])
     fc = [(fc[i] if i < len(fc) else 0) + (u3[i] if i < len(u3) else 0) for i in range(max(len(fc), len(u3)))]
-    return fc, _deriv(st.c[0])
-
-
-def _root_in(poly: Sequence[Any], h: Any) -> Any:
-    """Root of poly in [0, h] (a sign change between the ends) by bisection-safeguarded Newton."""
-    dp = _deriv(poly)
-    a, b = mpmath.mpf(0), h
-    fa = mp.horner(poly, a)
-    s = h / 2
-    for _ in range(200):
-        f = mp.horner(poly, s)
-        if (f > 0) == (fa > 0):
-            a, fa = s, f
-        else:
-            b = s
-        d = mp.horner(dp, s) if dp else 0
-        nxt = s - f / d if d else (a + b) / 2
-        if not (min(a, b) <= nxt <= max(a, b)):
-            nxt = (a + b) / 2
-        if abs(nxt - s) <= abs(h) * mpmath.mpf(2) ** (-mpmath.mp.prec + 6):
-            return nxt
-        s = nxt
-    raise RuntimeError("exact (force end, mpmath): root search did not converge")
+    return fc, derivative(st.c[0])
 
 
 def solve_mp(lam: RealLike, dps: int = 30) -> ForceEndSolution:
@@ -395,10 +355,10 @@ def solve_mp(lam: RealLike, dps: int = 30) -> ForceEndSolution:
                 t0 = ph.t_start[i]
                 # peak of F_c: F_c' (in s) changes sign from + to -
                 if F_m is None:
-                    dfc = _deriv(fc)
-                    if mp.horner(dfc, st.h) <= 0:
-                        s = _root_in(dfc, st.h) if mp.horner(dfc, 0) > 0 else mpmath.mpf(0)
-                        F_m = mp.horner(fc, s)
+                    dfc = derivative(fc)
+                    if horner(dfc, st.h) <= 0:
+                        s = root(dfc, 0, st.h) if horner(dfc, 0) > 0 else mpmath.mpf(0)
+                        F_m = horner(fc, s)
                 # force-free end, after the end of compression
                 if ph.kind == "tau":
                     g = [st.c[0][j] + k * st.c[1][j] for j in range(len(st.c[0]))]
@@ -407,14 +367,14 @@ def solve_mp(lam: RealLike, dps: int = 30) -> ForceEndSolution:
                     g[0] += st.x0**2
                     g[1] += 2 * st.x0
                     g[2] += 1
-                past_dc = t0 >= sol.tau_dc or mp.horner(st.c[1], st.h) < 0
-                if F_m is not None and past_dc and mp.horner(g, st.h) <= 0:
-                    s = _root_in(g, st.h)
-                    J += _integral(_mul(_mul(fc, fc), dtau), s)
-                    v_end = mp.horner(st.c[1], s)
-                    tau_d = t0 + s if ph.kind == "tau" else mp.horner(st.c[0], s)
+                past_dc = t0 >= sol.tau_dc or horner(st.c[1], st.h) < 0
+                if F_m is not None and past_dc and horner(g, st.h) <= 0:
+                    s = root(g, 0, st.h)
+                    J += integral(product(product(fc, fc), dtau), s)
+                    v_end = horner(st.c[1], s)
+                    tau_d = t0 + s if ph.kind == "tau" else horner(st.c[0], s)
                     return ForceEndSolution(lam=L, delta_m=sol.delta_m, tau_dc=sol.tau_dc, tau_d=tau_d,
                                             v_end=v_end, int_F2=J, F_m=F_m, xi=1 - v_end**2,
                                             _base=sol)
-                J += _integral(_mul(_mul(fc, fc), dtau), st.h)
+                J += integral(product(product(fc, fc), dtau), st.h)
     raise RuntimeError(f"exact (force end, mpmath): no force-free point found at lambda = {lam}")

@@ -46,6 +46,7 @@ import mpmath
 import numpy as np
 
 from .. import params
+from ..numerics.taylor import horner, root
 from ..typing import FloatArray, RealArrayLike, RealLike
 from .solver import LAMBDA_MAX, ContactTimes
 
@@ -93,50 +94,6 @@ class _Phase:
             cs = np.array(rows)  # (steps, states, N+1): coefficients of σ = s/h in [0, 1]
             self._flt = (x0, h, np.array([float(t) for t in self.t_start]), cs)
         return self._flt
-
-
-def horner(c: Sequence[Any], s: Any) -> Any:
-    """Σ_k c_k s^k by Horner's rule (mpmath numbers, or anything with + and *).
-
-    Parameters
-    ----------
-    c : sequence
-        Coefficients c_0 ... c_n, n >= 0.
-    s : mpmath.mpf or float
-        The argument.
-
-    Returns
-    -------
-    mpmath.mpf or float
-        The polynomial at s.
-    """
-    acc = c[-1]
-    for ck in reversed(c[:-1]):
-        acc = acc * s + ck
-    return acc
-
-
-def _horner_d(c: Sequence[Any], s: Any) -> tuple[Any, Any]:
-    """Value and derivative of Σ c_k s^k."""
-    p, dp = c[-1], 0
-    for ck in reversed(c[:-1]):
-        dp = dp * s + p
-        p = p * s + ck
-    return p, dp
-
-
-def _poly_root(c: Sequence[Any], target: Any, h: Any) -> Any:
-    """s between 0 and h with Σ c_k s^k = target (a simple root of a monotone piece), by Newton."""
-    p0, ph = c[0], horner(c, h)
-    s = h * (target - p0) / (ph - p0)
-    tol = abs(h) * mpmath.mpf(2) ** (-mpmath.mp.prec + 8)
-    for _ in range(100):
-        p, dp = _horner_d(c, s)
-        ds = (p - target) / dp
-        s -= ds
-        if abs(ds) <= tol:
-            return s
-    raise RuntimeError("exact.mp: Newton's method on the Taylor polynomial did not converge")
 
 
 def _order(dps: int) -> int:
@@ -293,7 +250,7 @@ class MpSolution(ContactTimes):
                         s = t - st.x0
                         d, w = horner(st.c[0], s), horner(st.c[2], s)
                     else:
-                        s = _poly_root(st.c[0], t, st.h) if t != st.c[0][0] else mpmath.mpf(0)
+                        s = root(st.c[0], t, st.h) if t != st.c[0][0] else mpmath.mpf(0)
                         u = st.x0 + s
                         d, w = u * u, horner(st.c[2], s)
                     d = max(d, mpmath.mpf(0))
@@ -341,25 +298,17 @@ class MpSolution(ContactTimes):
             C = cs[k]  # (m, states, N+1), coefficients of σ = s/h in [0, 1]
             if ph.kind == "tau":
                 sig = (flat[idx] - t0[k]) / h[k]
-                d = _horner_np(C[:, 0], sig)
+                d = horner(C[:, 0].T, sig)
             else:
                 sig = _invert_np(C[:, 0], flat[idx])
                 u = x0[k] + sig * h[k]
                 d = u * u
             d_flat[idx] = d
-            w_flat[idx] = _horner_np(C[:, 2], sig)
+            w_flat[idx] = horner(C[:, 2].T, sig)
         delta = np.maximum(d_flat, 0.0).reshape(t_arr.shape)
         w = w_flat.reshape(t_arr.shape)
         return {"tau": t_arr, "delta": delta, "impulse": 1.0 - w, "velocity": w,
                 "force": delta**1.5}
-
-
-def _horner_np(C: FloatArray, x: FloatArray) -> FloatArray:
-    """Σ_k C[:, k] x^k per row (float Horner)."""
-    acc: FloatArray = C[:, -1].copy()
-    for j in range(C.shape[1] - 2, -1, -1):
-        acc = acc * x + C[:, j]
-    return acc
 
 
 def _invert_np(C: FloatArray, t: FloatArray) -> FloatArray:
@@ -369,7 +318,7 @@ def _invert_np(C: FloatArray, t: FloatArray) -> FloatArray:
     sig: FloatArray = frac.copy()
     dC = C[:, 1:] * np.arange(1, C.shape[1])
     for _ in range(60):
-        p, dp = _horner_np(C, sig), _horner_np(dC, sig)
+        p, dp = horner(C.T, sig), horner(dC.T, sig)
         with np.errstate(divide="ignore", invalid="ignore"):
             ds = np.where(dp != 0.0, (p - t) / dp, 0.0)
         sig = np.clip(sig - ds, 0.0, 1.0)
@@ -452,7 +401,7 @@ def _integrate(lam: Any, dps: int, N: int) -> MpSolution:
         h = _step_size(c, N)
         done = horner(c[1], h) <= _V_SWITCH
         if done:
-            h = _poly_root(c[1], _V_SWITCH, h)
+            h = root(c[1], _V_SWITCH, h)
         p1.steps.append(_Step(u, h, c))
         p1.t_start.append(y[0])
         y = [horner(ci, h) for ci in c]
@@ -477,7 +426,7 @@ def _integrate(lam: Any, dps: int, N: int) -> MpSolution:
         p2.steps.append(_Step(t, h, c))
         p2.t_start.append(t)
         if tau_dc is None and y_new[1] <= 0:
-            s = _poly_root(c[1], zero, h)
+            s = root(c[1], zero, h)
             tau_dc, delta_m = t + s, horner(c[0], s)
         t, y = t + h, y_new
         if tau_dc is not None and y[1] < 0 and y[1] ** 2 >= 2 * y[0] ** 2 * mpmath.sqrt(y[0]):

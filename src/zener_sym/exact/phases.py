@@ -469,6 +469,8 @@ def integrate(contact: Contact, opts: Settings, span: float | None = None) -> tu
     leg = run_leg("loading", u_form, (0.0, u_cap), y0, opts,
                   (_v_half(u_form),) + contact.extra("loading"))
     legs = [leg]
+    if _ends(leg, contact, "loading"):  # a terminal extra event of loading ends the contact
+        return tuple(legs)
     t_cap = leg.end["tau"] + 100.0 + 100.0 * lam
     n = len(contact.middle)
     for i, form in enumerate(contact.middle):

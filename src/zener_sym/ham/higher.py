@@ -57,8 +57,9 @@ import numpy as np
 import numpy.typing as npt
 import scipy.optimize
 
-from ..numerics.chebyshev import cheb_nodes
-from ..numerics.maps import smoothstep, smoothstep_inverse, smoothstep_slope
+from ..numerics.chebyshev import chebint_matrix, first_kind
+from ..numerics.integrate import smoothstep_rule
+from ..numerics.maps import sine_squared, sine_squared_inverse, smoothstep_inverse
 from ..typing import FloatArray, RealArrayLike, RealLike
 
 __all__ = ["FORMULATIONS", "PAPER_MAX_ORDER", "STRAINED_MAX_ORDER", "N_NODES", "TAIL_TOL",
@@ -85,15 +86,9 @@ C0_RANGE = (-2.0, -0.05)
 
 
 # ------------------------------------------------------------------------- fixed matrices
-def _first_kind(n: int) -> tuple[FloatArray, FloatArray]:
-    x = cheb_nodes(n)[::-1].copy()
-    return x, np.linalg.inv(_C.chebvander(x, n - 1))
-
-
-_X, _FIT = _first_kind(N_NODES)
+_X, _FIT = first_kind(N_NODES)
 _T = 0.5 * (1.0 + _X)
-_TH = np.pi * np.sin(0.5 * np.pi * _T) ** 2
-_DTH = 0.5 * np.pi ** 2 * np.sin(np.pi * _T)  # d theta / dt
+_TH, _DTH = sine_squared(_T)  # theta and d theta / dt at the nodes
 
 
 def _mm(A: npt.NDArray[np.floating[Any]], B: npt.NDArray[np.floating[Any]]) -> FloatArray:
@@ -102,20 +97,14 @@ def _mm(A: npt.NDArray[np.floating[Any]], B: npt.NDArray[np.floating[Any]]) -> F
     return out
 
 
-_INTC = _mm(_C.chebint(np.eye(N_NODES), lbnd=-1.0, axis=0), _FIT)  # values -> antiderivative
+_INTC = _mm(chebint_matrix(N_NODES), _FIT)  # values -> antiderivative
 _CUM = _mm(_C.chebvander(_X, N_NODES), _INTC) * 0.5  # int_0^{t_j} g dt from node values (dt = dx/2)
 _CUM_END = _mm(_C.chebvander(np.array([1.0]), N_NODES), _INTC)[0] * 0.5
 
 # quadrature on a piece [A, B] of theta: smoothstep theta = A + (B - A) v^2 (3 - 2 v), Chebyshev
 # points in v (the map's derivative vanishes at both ends: endpoint powers s^{1/2} become analytic)
-_NQ = 96
-_QX, _QFIT = _first_kind(_NQ)
-_QV = 0.5 * (1.0 + _QX)
-_QMAP = smoothstep(_QV)
-_QDMAP = smoothstep_slope(_QV)
-_QINTC = _mm(_C.chebint(np.eye(_NQ), lbnd=-1.0, axis=0), _QFIT)
-_QCUM = _mm(_C.chebvander(_QX, _NQ), _QINTC) * 0.5
-_QEND = _mm(_C.chebvander(np.array([1.0]), _NQ), _QINTC)[0] * 0.5
+_Q = smoothstep_rule(96)
+_QMAP, _QDMAP, _QFIT, _QCUM, _QEND = _Q.map, _Q.slope, _Q.fit, _Q.cumulative, _Q.end
 
 
 def _mv(A: FloatArray, v: FloatArray) -> FloatArray:
@@ -149,8 +138,7 @@ def _expm_stack(A: FloatArray, h: RealArrayLike) -> FloatArray:
 
 def _theta_to_x(theta: RealArrayLike) -> FloatArray:
     """Chebyshev variable x in [-1, 1] of theta in [0, pi]."""
-    f = np.clip(np.asarray(theta, dtype=float) / np.pi, 0.0, 1.0)
-    out: FloatArray = 2.0 * (2.0 / np.pi) * np.arcsin(np.sqrt(f)) - 1.0
+    out: FloatArray = 2.0 * sine_squared_inverse(theta) - 1.0
     return out
 
 

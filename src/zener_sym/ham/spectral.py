@@ -41,8 +41,9 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..numerics.chebyshev import cheb_nodes, clenshaw_take
+from ..numerics.chebyshev import chebint_matrix, clenshaw_take, first_kind
 from ..numerics.integrate import cumulative_rows
+from ..numerics.maps import sine_squared, sine_squared_inverse
 from ..typing import FloatArray, RealArrayLike
 
 #: integer row indices into a Ham1Series
@@ -69,27 +70,15 @@ SPAN_PAST = 0.25
 _SCAN = 8
 
 
-def _first_kind(n: int) -> tuple[FloatArray, FloatArray]:
-    """Chebyshev points of the first kind, ascending, and the values -> coefficients matrix."""
-    x = cheb_nodes(n)[::-1].copy()
-    return x, np.linalg.inv(_C.chebvander(x, n - 1))
-
-
-def _theta(t: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """theta = pi sin^2(pi t / 2) and d theta / dt."""
-    s = np.sin(0.5 * np.pi * t)
-    return np.pi * s * s, 0.5 * np.pi * np.pi * np.sin(np.pi * t)
-
-
 # Global series for K: integrand values at the nodes -> K at any t, through a fixed matrix.
-_GX, _GFIT = _first_kind(N_GLOBAL)
+_GX, _GFIT = first_kind(N_GLOBAL)
 _GT = 0.5 * (1.0 + _GX)
-_GTH, _GDTH = _theta(_GT)
+_GTH, _GDTH = sine_squared(_GT)
 _GS, _GC = np.sin(_GTH), np.cos(_GTH)
 # integrand factor common to the three K (dtheta/dx = dtheta/dt / 2), and g(theta) per K
 _GBASE = np.sqrt(_GS) * 0.5 * _GDTH
 _GG = np.stack([_GC * _GC, _GS * _GC, _GS * _GS])
-_GINT = _C.chebint(np.eye(N_GLOBAL), lbnd=-1.0, axis=0)  # coefficients of the antiderivative
+_GINT = chebint_matrix(N_GLOBAL)  # coefficients of the antiderivative
 _GINTFIT = _GINT @ _GFIT  # integrand values at the nodes -> coefficients of K
 
 
@@ -101,7 +90,7 @@ def _k_matrix(t: FloatArray) -> FloatArray:
 
 _GKP = _k_matrix(np.append(_GT, 1.0))  # (N, N + 1): K at the global nodes, then at pi
 # Local pieces: Chebyshev points of each piece, and the global -> piece coefficients matrix
-_LX, _LFIT = _first_kind(N_LOCAL)
+_LX, _LFIT = first_kind(N_LOCAL)
 _LT = (np.arange(N_PIECES)[:, None] + 0.5 * (1.0 + _LX)) / N_PIECES  # (P, n) t of the nodes
 _REEXPAND = (_C.chebvander(2.0 * _LT.ravel() - 1.0, N_GLOBAL - 1).T
              @ np.kron(np.eye(N_PIECES), _LFIT.T))  # (N, P n)
@@ -233,7 +222,7 @@ class Ham1Series:
             tg = np.arange(n1 + 1) / n1
             t = _newton(lambda t: self._seg1_eval(r, t), tg[jf - 1], tg[jf], lo_f[first],
                         hi_f[first])
-            self.tau_d[r] = _theta(t)[0] / self.omega0[r]
+            self.tau_d[r] = sine_squared(t)[0] / self.omega0[r]
         if (~first).any():
             r, jp = rows[~first], j[~first] - n1
             xg = -1.0 + 2.0 * np.arange(_SCAN + 1) / _SCAN
@@ -342,13 +331,12 @@ class Ham1Series:
             tg = np.arange(grid.shape[1]) / (N_PIECES * _SCAN)
             t = _newton(lambda t: self._seg1_eval(rows, t, order=1), tg[j - 1], tg[j],
                         grid[ii, j - 1], grid[ii, j])
-            out["tau_dc"][rows] = _theta(t)[0] / self.omega0[rows]
+            out["tau_dc"][rows] = sine_squared(t)[0] / self.omega0[rows]
             out["delta_m"][rows] = self._seg1_eval(rows, t)[0]
             td = self.tau_d[rows]
             lam = self.lam[rows]
             past = td >= self.tpi[rows]
-            t_d = np.where(past, 1.0, (2.0 / np.pi) * np.arcsin(np.sqrt(np.minimum(
-                td * self.omega0[rows] / np.pi, 1.0))))
+            t_d = np.where(past, 1.0, sine_squared_inverse(td * self.omega0[rows]))
             K = self._K_at(rows, t_d)
             Kf = tuple(np.where(past, kp, k) for kp, k in zip(self.K_pi[:, rows], K))
             out["e"][rows] = -h1.delta_dot_from_K(td, lam, *Kf)

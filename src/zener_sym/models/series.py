@@ -21,6 +21,7 @@ range with ``contact_end="force"``.
 """
 from __future__ import annotations
 
+import functools
 import json
 from importlib import resources
 from typing import TypedDict
@@ -30,6 +31,7 @@ import numpy.typing as npt
 
 from ..exact.force_end import check_contact_end
 from ..exact.solver import LAMBDA_MAX
+from ..numerics.taylor import horner
 from ..typing import FloatArray, RealArrayLike
 from .base import FieldValues, Model, register
 
@@ -56,31 +58,41 @@ class Coefficients(TypedDict):
     large: dict[str, float]
 
 
-_DATA: Coefficients | None = None
-
-
 def coefficients() -> Coefficients:
     """The committed coefficients, read once.
+
+    Every call shares the same arrays, so they are read-only (a caller that wrote to one would
+    change every later answer); the dicts are the caller's own.
 
     Returns
     -------
     Coefficients
-        ``small[name]``: array of float, constant term first; ``large[name]``: float.
+        ``small[name]``: read-only array of float, constant term first; ``large[name]``: float.
+
+    Examples
+    --------
+    >>> from zener_sym.models.series import coefficients
+    >>> c = coefficients()["small"]["e_delta"]
+    >>> float(c[0]), c.flags.writeable
+    (1.0, False)
     """
-    global _DATA
-    if _DATA is None:
-        raw = json.loads((resources.files("zener_sym") / "data" / "lambda_series.json").read_text("utf-8"))
-        _DATA = {"small": {n: np.array([float(c) for c in v["c"]]) for n, v in raw["small"].items()},
-                 "large": {n: float(v) for n, v in raw["large"].items()}}
-    return _DATA
+    small, large = _read()
+    return {"small": dict(small), "large": dict(large)}
+
+
+@functools.cache
+def _read() -> tuple[dict[str, FloatArray], dict[str, float]]:
+    raw = json.loads((resources.files("zener_sym") / "data" / "lambda_series.json").read_text("utf-8"))
+    small = {n: np.array([float(c) for c in v["c"]]) for n, v in raw["small"].items()}
+    for arr in small.values():
+        arr.flags.writeable = False
+    return small, {n: float(v) for n, v in raw["large"].items()}
 
 
 def _poly(c: FloatArray, x: FloatArray) -> FloatArray:
     """sum_{k>=1} c_k x^k (the constant term left out, so 1 - e keeps its relative accuracy)."""
-    acc = np.zeros_like(x)
-    for ck in c[:0:-1]:
-        acc = (acc + ck) * x
-    return acc
+    out: FloatArray = horner(c[1:], x) * x
+    return out
 
 
 class SeriesModel(Model):

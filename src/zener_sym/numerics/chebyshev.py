@@ -2,7 +2,9 @@
 
 * ``cheb_nodes``, ``cheb_fit_matrix``, ``cheb_coefficients``: points of the first kind and the
   interpolant's coefficients through values there (DCT-II), the one definition the table
-  builders, the K_s series and the integrators share. ``trim_trailing`` drops the trailing
+  builders, the K_s series and the integrators share. ``first_kind``: the same points ascending,
+  with the inverse Vandermonde matrix the HAM solvers fit with; ``chebint_matrix``: coefficients
+  to the coefficients of the antiderivative from -1. ``trim_trailing`` drops the trailing
   coefficients below a fraction of the largest; ``cheb_to_monomial`` converts to monomials.
 * ``clenshaw_take``: Chebyshev series evaluated pointwise, each point picking its coefficient row
   by index from a transposed table (no per-point copy of a row).
@@ -19,7 +21,8 @@ import numpy.typing as npt
 
 from ..typing import FloatArray, RealArrayLike
 
-__all__ = ["cheb_nodes", "cheb_fit_matrix", "cheb_coefficients", "trim_trailing",
+__all__ = ["cheb_nodes", "cheb_fit_matrix", "cheb_coefficients", "first_kind", "chebint_matrix",
+           "trim_trailing",
            "cheb_to_monomial", "coefficient_difference", "clenshaw_take", "horner_take",
            "horner_take_pair"]
 
@@ -57,6 +60,46 @@ def cheb_fit_matrix(n: int) -> FloatArray:
     k = np.arange(n)
     m: FloatArray = np.cos(np.pi * np.outer(k, k + 0.5) / n) * (2.0 / n)
     m[0] *= 0.5
+    return m
+
+
+def first_kind(n: int) -> tuple[FloatArray, FloatArray]:
+    """Chebyshev points of the first kind, ascending, and the values -> coefficients matrix.
+
+    The matrix is the inverse of the Vandermonde matrix at the points (not the DCT-II of
+    ``cheb_fit_matrix``: the same interpolant, other rounding, which the HAM solvers' digits keep).
+
+    Parameters
+    ----------
+    n : int
+        Number of points (and of coefficients), >= 1.
+
+    Returns
+    -------
+    x : ndarray
+        The n points in (-1, 1), ascending.
+    fit : ndarray
+        [degree, point], n x n.
+    """
+    x = cheb_nodes(n)[::-1].copy()
+    fit = np.asarray(np.linalg.inv(np.polynomial.chebyshev.chebvander(x, n - 1)), dtype=np.float64)
+    return x, fit
+
+
+def chebint_matrix(n: int) -> FloatArray:
+    """The matrix taking n Chebyshev coefficients to those of the antiderivative that is 0 at -1.
+
+    Parameters
+    ----------
+    n : int
+        Number of coefficients, >= 1.
+
+    Returns
+    -------
+    ndarray
+        [degree, degree], (n + 1) x n.
+    """
+    m = np.asarray(np.polynomial.chebyshev.chebint(np.eye(n), lbnd=-1.0, axis=0), dtype=np.float64)
     return m
 
 

@@ -13,6 +13,7 @@ import math
 import numpy as np
 
 from ..typing import FloatArray, RealArrayLike
+from .taylor import horner
 
 __all__ = ["p3", "half_wave_sin"]
 
@@ -41,10 +42,7 @@ def p3(x: RealArrayLike) -> FloatArray:
     out: FloatArray = (np.sin(xs) - xs * np.cos(xs)) / (xs * xs * xs)
     if small.any():  # the series only where it is needed: most points of a history are not small
         x2 = x[small] ** 2
-        series = np.zeros_like(x2)
-        for c in reversed(_P3_COEF):  # Horner in x^2; 12 terms reach 1e-19 at |x| = 1/2
-            series = series * x2 + c
-        out[small] = series
+        out[small] = horner(_P3_COEF, x2)  # in x^2; 12 terms reach 1e-19 at |x| = 1/2
     return out.reshape(shape)
 
 

@@ -10,19 +10,24 @@
   per lambda and integrated as a Chebyshev series, then evaluated at every requested upper limit.
   A history of P times costs N_CHEB integrand evaluations per lambda instead of N_GL per time.
   ``cumulative_rows`` is the same with rows given by index (``zener_sym.ham.spectral`` uses it).
+* ``smoothstep_rule``: that Chebyshev rule in v as matrices, for n points (cached): the one
+  definition these functions and ``zener_sym.ham.higher`` (on theta pieces) share.
 """
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 import numpy.typing as npt
 
 from ..typing import FloatArray, RealArrayLike
-from .chebyshev import cheb_nodes, clenshaw_take
+from .chebyshev import cheb_nodes, chebint_matrix, clenshaw_take
 from .maps import smoothstep, smoothstep_inverse, smoothstep_slope
 
-__all__ = ["N_GL", "N_CHEB", "contact_integral", "cumulative_integral", "cumulative_rows"]
+__all__ = ["N_GL", "N_CHEB", "SmoothstepRule", "smoothstep_rule", "contact_integral",
+           "cumulative_integral", "cumulative_rows"]
 
 N_GL = 48
 _gx, _gw = np.polynomial.legendre.leggauss(N_GL)
@@ -57,12 +62,56 @@ def contact_integral(fun: Callable[[FloatArray, FloatArray], FloatArray], A: Rea
     return out
 
 
+class SmoothstepRule(NamedTuple):
+    """The Chebyshev rule in the smoothstep variable v of a piece (``smoothstep_rule``).
+
+    On a piece [A, B] the points are tau_j = A + (B - A) ``map[j]``; for g_j = f(tau_j) (B - A)
+    ``slope[j]``, ``fit @ g`` are the Chebyshev coefficients in x = 2 v - 1 of the integrand in
+    v, ``cumulative @ g`` the integrals from A to each point and ``end @ g`` the one to B.
+    """
+
+    #: the Chebyshev points of the first kind, descending (``cheb_nodes``)
+    x: FloatArray
+    #: smoothstep(v) and its slope at v = (1 + x) / 2
+    map: FloatArray
+    slope: FloatArray
+    #: values -> Chebyshev coefficients, [degree, point]
+    fit: FloatArray
+    #: values -> integral from the piece's start to each point, [point, point]
+    cumulative: FloatArray
+    #: values -> integral over the whole piece, [point]
+    end: FloatArray
+
+
+@functools.lru_cache(maxsize=None)
+def smoothstep_rule(n: int) -> SmoothstepRule:
+    """The smoothstep-mapped Chebyshev rule of n points (cached per n).
+
+    Parameters
+    ----------
+    n : int
+        Number of Chebyshev points, >= 1.
+
+    Returns
+    -------
+    SmoothstepRule
+        Its points and matrices (einsum products: no BLAS, whose blocking and threads would
+        make the digits depend on the machine's load).
+    """
+    x = cheb_nodes(n)
+    v = (1.0 + x) / 2.0
+    vander = np.polynomial.chebyshev.chebvander
+    fit = np.asarray(np.linalg.inv(vander(x, n - 1)), dtype=np.float64)
+    intc = np.einsum("ij,jk->ik", chebint_matrix(n), fit)  # values -> antiderivative in x
+    # dv = dx / 2: the halves turn integrals in x into integrals in v
+    cumulative = np.einsum("ij,jk->ik", vander(x, n), intc) * 0.5
+    end = np.einsum("ij,jk->ik", vander(np.array([1.0]), n), intc)[0] * 0.5
+    return SmoothstepRule(x, smoothstep(v), smoothstep_slope(v), fit, cumulative, end)
+
+
 N_CHEB = 64
-_CX = cheb_nodes(N_CHEB)
-_CV = (1.0 + _CX) / 2.0
-_CMAP = smoothstep(_CV)
-_CDMAP = smoothstep_slope(_CV)
-_CFIT = np.linalg.inv(np.polynomial.chebyshev.chebvander(_CX, N_CHEB - 1))
+_RULE = smoothstep_rule(N_CHEB)
+_CMAP, _CDMAP, _CFIT = _RULE.map, _RULE.slope, _RULE.fit
 
 
 def cumulative_integral(fun: Callable[[FloatArray, FloatArray], FloatArray], A: RealArrayLike,

@@ -180,27 +180,25 @@ _WIDTH = np.pi / 2.0 / N_PIECES
 _BLOCK = BLOCK
 
 
-_KS_TABLE: tuple[FloatArray, FloatArray] | None = None
-
-
+@functools.cache
 def _ks_table() -> tuple[FloatArray, FloatArray]:
     """Coefficients [piece, theta degree, a degree] of G and H (computed on first use, about
-    4000 quadrature points)."""
-    global _KS_TABLE
-    if _KS_TABLE is None:
-        a = A_SERIES / 2.0 * (cheb_nodes(N_RATE) + 1.0)
-        dt, da = cheb_fit_matrix(N_SERIES), cheb_fit_matrix(N_RATE)
-        cG: list[FloatArray] = []
-        cH: list[FloatArray] = []
-        for p in range(N_PIECES):
-            y = _WIDTH * (p + 0.5 * (cheb_nodes(N_SERIES) + 1.0))  # theta or r in the piece
-            A, Y = np.meshgrid(a, y)  # [theta node, a node]
-            G = _left(A, Y, ("s",))["s"] / Y**2.5
-            H = _right(A, Y, ("s",))["s"] / Y**2.5  # integral over [pi - r, pi], no cancellation
-            cG.append(dt @ G @ da.T)
-            cH.append(dt @ H @ da.T)
-        _KS_TABLE = (np.array(cG), np.array(cH))
-    return _KS_TABLE
+    4000 quadrature points; read-only, as every caller shares them)."""
+    a = A_SERIES / 2.0 * (cheb_nodes(N_RATE) + 1.0)
+    dt, da = cheb_fit_matrix(N_SERIES), cheb_fit_matrix(N_RATE)
+    cG: list[FloatArray] = []
+    cH: list[FloatArray] = []
+    for p in range(N_PIECES):
+        y = _WIDTH * (p + 0.5 * (cheb_nodes(N_SERIES) + 1.0))  # theta or r in the piece
+        A, Y = np.meshgrid(a, y)  # [theta node, a node]
+        G = _left(A, Y, ("s",))["s"] / Y**2.5
+        H = _right(A, Y, ("s",))["s"] / Y**2.5  # integral over [pi - r, pi], no cancellation
+        cG.append(dt @ G @ da.T)
+        cH.append(dt @ H @ da.T)
+    out = (np.array(cG), np.array(cH))
+    for arr in out:
+        arr.flags.writeable = False
+    return out
 
 
 def impulse_s(a: RealArrayLike, theta: RealArrayLike) -> FloatArray:

@@ -124,15 +124,15 @@ def test_round_trip_force_end():
     rng = np.random.default_rng(5)
     x = np.concatenate([np.exp(rng.uniform(np.log(e_min), 0.0, 20000)),
                         1.0 - np.geomspace(1e-16, 0.5, 400), [e_min, 1.0]])
-    lam = zs.lam_for(e=x, contact_end="force")
+    lam = zs.lam_from_summary(e=x, contact_end="force")
     e = zs.summary(lam, contact_end="force").e
     assert np.max(np.abs(e - x) / x) <= 1e-12
     xi = np.concatenate([[0.0], np.geomspace(1e-16, inverse.reachable("xi", "force")[1], 2000)])
-    lam = zs.lam_for(xi=xi, contact_end="force")
+    lam = zs.lam_from_summary(xi=xi, contact_end="force")
     assert np.all(np.abs(zs.summary(lam, contact_end="force").xi - xi) <= 1e-12 * xi)
     lo, hi = inverse.reachable("tau_d", "force")
     t = np.linspace(lo, hi, 2001)
-    lam = zs.lam_for(tau_d=t, contact_end="force")
+    lam = zs.lam_from_summary(tau_d=t, contact_end="force")
     np.testing.assert_allclose(zs.summary(lam, contact_end="force").tau_d, t, rtol=1e-12)
 
 
@@ -145,7 +145,7 @@ def test_force_tau_d_monotone_branch():
     ref = [force_end.solve(x).tau_d for x in (0.0, 0.5, 5.0, 50.0, 500.0)]
     assert np.all(np.diff(ref) < 0)
     with pytest.raises(ValueError, match="reachable range"):
-        zs.lam_for(tau_d=3.3, contact_end="force")
+        zs.lam_from_summary(tau_d=3.3, contact_end="force")
 
 
 def test_force_derivative_bad_input():

@@ -20,8 +20,7 @@ def res():
 @pytest.fixture(scope="module")
 def res_scipy():
     """The same scene integrated (backend "scipy"), where e and xi are separate states."""
-    return zs.summary(zs.Scene("steel", "aluminium", 1e-3, 1e-3, 2.0), model="exact",
-                      backend="scipy")
+    return zs.Scene("steel", "aluminium", 1e-3, 1e-3, 2.0).result(model="exact", backend="scipy")
 
 
 def test_identities(res_scipy):

@@ -83,7 +83,8 @@ def derive(ctx: Context | None = None) -> Context:
     # F = k a delta + eta0 m_eff a delta'.
     a = sp.sqrt(R * dpos)
     F_lammps = sp.Rational(4, 3) * E_mix * a * dpos + eta * m * a * dd
-    # The grain reading: rho (delta^{3/2} + A d/dt delta^{3/2}), d/dt delta^{3/2} = (3/2) sqrt(delta) delta'.
+    # The grain reading: rho (delta^{3/2} + A d/dt delta^{3/2}), with
+    # d/dt delta^{3/2} = (3/2) sqrt(delta) delta'.
     F_grain = rho * (dpos ** sp.Rational(3, 2) + A * sp.Rational(3, 2) * sp.sqrt(dpos) * dd)
     diff = sp.expand(F_lammps - F_grain)
     c32 = diff.coeff(dpos ** sp.Rational(3, 2)).subs(dd, 0)
@@ -94,7 +95,8 @@ def derive(ctx: Context | None = None) -> Context:
     eta_of_A = 2 * Es * A / m
     A_of_eta = eta0 * m / (2 * Es)
 
-    ctx.check("L1", "LAMMPS's F = (4/3) E_mix sqrt(R delta) delta + eta_n0 m_eff sqrt(R delta) delta' "
+    ctx.check("L1", "LAMMPS's F = (4/3) E_mix sqrt(R delta) delta "
+              "+ eta_n0 m_eff sqrt(R delta) delta' "
               "equals rho (delta^(3/2) + A (delta^(3/2))') for every (delta, delta') iff "
               "rho = (4/3) E_mix sqrt(R_eff) and eta_n0 = 2 E_mix A / m_eff",
               "SymPy: coefficients of delta^(3/2) and sqrt(delta) delta' solved",
@@ -115,11 +117,13 @@ def derive(ctx: Context | None = None) -> Context:
               lambda: (sp.simplify(A_of_eta.subs(eta0, eta_of_A) - A) == 0
                        and sp.simplify(eta_of_A.subs(A, A_of_eta) - eta0) == 0, "identity"))
 
-    lam_grain = A * (sp.Rational(4, 3) * Es * sp.sqrt(R) / m) ** sp.Rational(2, 5) * v ** sp.Rational(1, 5)
+    rho_h = sp.Rational(4, 3) * Es * sp.sqrt(R)
+    lam_grain = A * (rho_h / m) ** sp.Rational(2, 5) * v ** sp.Rational(1, 5)
     lam_eta = sp.simplify(lam_grain.subs(A, A_of_eta))
     lam_closed = (eta0 / 2 * (sp.Rational(4, 3)) ** sp.Rational(2, 5) * m ** sp.Rational(3, 5)
                   * Es ** sp.Rational(-3, 5) * R ** sp.Rational(1, 5) * v ** sp.Rational(1, 5))
-    ctx.check("L3", "lambda in LAMMPS's terms: lambda = (eta_n0/2) (4/3)^(2/5) m_eff^(3/5) E*^(-3/5) "
+    ctx.check("L3", "lambda in LAMMPS's terms: lambda = (eta_n0/2) (4/3)^(2/5) m_eff^(3/5) "
+              "E*^(-3/5) "
               "R_eff^(1/5) v^(1/5)", "SymPy simplify of A (rho/m_eff)^(2/5) v^(1/5)",
               lambda: (sp.simplify(sp.powsimp(lam_eta / lam_closed, force=True)) == 1,
                        f"lambda = {lam_closed}"))
@@ -132,7 +136,8 @@ def derive(ctx: Context | None = None) -> Context:
                        and sp.simplify(mix_wall(E_lammps, nu_L) - Es) == 0, "both equal E*"))
     ctx.check("L4", "a sphere of one material (E, nu) on itself or on a wall of that material: "
               "E_L = 2 (1 - nu^2) E* = E", "SymPy simplify",
-              lambda: (sp.simplify(E_lammps.subs({Es: mix_pair(E1, nu1, E1, nu1), nu_L: nu1}) - E1) == 0
+              lambda: (sp.simplify(E_lammps.subs({Es: mix_pair(E1, nu1, E1, nu1), nu_L: nu1})
+                                   - E1) == 0
                        and sp.simplify(E_lammps.subs({Es: mix_wall(E1, nu1), nu_L: nu1}) - E1) == 0,
                        "E_L = E"))
     ctx.check("L4", "two materials: E_L = 2 (1 - nu_L^2) / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) "
@@ -148,7 +153,8 @@ def derive(ctx: Context | None = None) -> Context:
                if sp.simplify(_dimension(e) / want) != 1}
         return not bad, "all homogeneous" if not bad else f"wrong: {bad}"
 
-    ctx.check("L2", "units: eta_n0 in 1/(s m) (LAMMPS's doc), A in s, lambda dimensionless, E_L in Pa",
+    ctx.check("L2", "units: eta_n0 in 1/(s m) (LAMMPS's doc), A in s, lambda dimensionless, "
+              "E_L in Pa",
               "scale every symbol by its dimension, SymPy simplify", units_ok)
 
     # limit_damping: LAMMPS sets a negative total force to 0. Where the force first vanishes in
@@ -158,7 +164,8 @@ def derive(ctx: Context | None = None) -> Context:
     s = sp.Symbol("s", positive=True)
     delta1 = -sp.Rational(3, 2) * A * u
     free = (delta1 + u * s) + sp.Rational(3, 2) * A * u
-    ctx.check("L5", "limit_damping is the force-free end: after F = 0 in recovery, free flight keeps "
+    ctx.check("L5", "limit_damping is the force-free end: after F = 0 in recovery, free flight "
+              "keeps "
               "delta + (3/2) A delta' = u s < 0 (u < 0 the rate), so F stays clipped to 0 until "
               "delta = 0 and e is the speed where F vanished", "SymPy simplify and sign",
               lambda: (sp.simplify(free - u * s) == 0 and (u * s).is_negative is True,
@@ -168,7 +175,8 @@ def derive(ctx: Context | None = None) -> Context:
                     E_lammps=E_lammps)
     ctx.eq("L1", sp.Symbol(r"\eta_{n0}"), eta_of_A, "LAMMPS's viscoelastic damping coefficient")
     ctx.eq("L2", sp.Symbol("A"), A_of_eta, "the dissipative constant of a LAMMPS contact")
-    ctx.eq("L4", sp.Symbol("E_L"), E_lammps, "the E of a pair_coeff * * or wall line for a given E*")
+    ctx.eq("L4", sp.Symbol("E_L"), E_lammps,
+           "the E of a pair_coeff * * or wall line for a given E*")
     return ctx
 
 

@@ -59,14 +59,16 @@ def test_lammps_force_with_the_lines_constants_is_the_grain_force(kw):
     assert E_mix == pytest.approx(g.E_star, rel=1e-14)
     for delta, rate in [(1e-7, 0.5), (3e-6, -0.2), (2e-5, 1.3)]:
         F_grain = g.rho * (delta**1.5 + A * 1.5 * math.sqrt(delta) * rate)
-        assert lammps_force(E_mix, eta, g.m_eff, g.R_eff, delta, rate) == pytest.approx(F_grain, rel=1e-13)
+        F_lammps = lammps_force(E_mix, eta, g.m_eff, g.R_eff, delta, rate)
+        assert F_lammps == pytest.approx(F_grain, rel=1e-13)
 
 
 def test_two_materials_line_reproduces_lammps_own_two_type_mixing():
     glass, steel = zs.GLASS, zs.STEEL
     c = lammps_contact("glass", "1 mm", sphere2="steel")
     two_types = lammps_E_mix_pair(glass.E, glass.nu, steel.E, steel.nu)
-    assert lammps_E_mix_pair(c.E_lammps, c.nu_lammps, c.E_lammps, c.nu_lammps) == pytest.approx(two_types, rel=1e-14)
+    one_line = lammps_E_mix_pair(c.E_lammps, c.nu_lammps, c.E_lammps, c.nu_lammps)
+    assert one_line == pytest.approx(two_types, rel=1e-14)
     # one material with itself: the line's E is the material's own
     same = lammps_contact("steel", "1 mm")
     assert same.E_lammps == pytest.approx(steel.E, rel=1e-14) and same.nu_lammps == steel.nu
@@ -124,7 +126,8 @@ def test_cli_json(capsys):
     assert {"fix_wall", "A_s", "damping", "contact_end", "table"} <= set(d)
     assert d["fix_wall"].startswith("fix wall all wall/gran granular hertz/material ")
     assert d["contact_end"] == "force" and "limit_damping" in d["fix_wall"]
-    assert set(d["table"][0]) == {"v_m_s", "lambda", "e", "contact_time_s", "max_force_N", "dt_max_s"}
+    assert set(d["table"][0]) == {"v_m_s", "lambda", "e", "contact_time_s", "max_force_N",
+                                  "dt_max_s"}
     # the damping coefficient on the line is the one reported, to the last digit
     assert float(d["fix_wall"].split()[7]) == d["damping"]
     p = _json(capsys, "--sphere", "glass", "--radius", "1mm", "--A", "240ns", "--contact-end",
@@ -147,7 +150,8 @@ def test_cli_text(capsys):
     (["--sphere", "glass", "--radius", "1mm", "--A", "1"], "give a unit"),
     (["--sphere", "glass", "--radius", "1mm", "--A", "1ns", "--speeds", "1,2"], "give a unit"),
     (["--sphere", "unobtainium", "--radius", "1mm", "--A", "1ns"], "neither a preset"),
-    (["--sphere", "glass", "--radius", "1mm", "--wall", "steel", "--sphere2", "glass", "--A", "1ns"],
+    (["--sphere", "glass", "--radius", "1mm", "--wall", "steel", "--sphere2", "glass", "--A",
+      "1ns"],
      "not both"),
     (["--sphere", "glass", "--radius", "1mm", "--e", "1e-7", "--at", "1m/s"], "reachable"),
     (["--sphere", "glass", "--radius", "1mm", "--e", "1.2", "--at", "1m/s"], "(0, 1]"),

@@ -47,7 +47,8 @@ CASES = [  # (CLI geometry arguments, the same contact for the runner)
 
 @pytest.mark.parametrize("end", ["force", "delta"])
 @pytest.mark.parametrize("geo", range(len(CASES)))
-def test_cli_lines_reproduce_the_exact_e_within_lammps_discretization_error(capsys, session, end, geo):
+def test_cli_lines_reproduce_the_exact_e_within_lammps_discretization_error(capsys, session, end,
+                                                                           geo):
     cli_args, kw = CASES[geo]
     c = lammps_contact("glass", "1 mm", **kw)
     # three lambdas across the table: A fixed by e = 0.8 at 1 m/s is lambda ~ 0.13; the speeds

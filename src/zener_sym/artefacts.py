@@ -399,7 +399,8 @@ ARTEFACTS: tuple[Artefact, ...] = (
     Artefact("audit", "the paper audit", ("AUDIT.md",), _audit_fresh,
              alias="audit --write"),
     Artefact("lammps-error-law", "LAMMPS's measured e error over lambda and steps per contact "
-             "(zener-sym lammps reads it; runs LAMMPS)", ("src/zener_sym/data/lammps_error_law.json",),
+             "(zener-sym lammps reads it; runs LAMMPS)",
+             ("src/zener_sym/data/lammps_error_law.json",),
              lambda root: _lammps().law_fresh(root),
              lambda rel, old, new: _lammps().law_same(rel, old, new), needs_checkout=False),
     Artefact("lammps-convergence", "LAMMPS against the exact e: ladder of timesteps, observed "
@@ -417,7 +418,8 @@ ARTEFACTS: tuple[Artefact, ...] = (
              write=lambda root, texts: _lammps().stability_write(root, texts)),
     Artefact("lammps-mpi", "the example deck of 10 000 grains on a wall, run with mpirun -np 2 "
              "(and 1): every grain's e against the exact e(v)",
-             ("examples/lammps/in.impacts", "docs/data/lammps_mpi.csv", "docs/figures/lammps_mpi.png"),
+             ("examples/lammps/in.impacts", "docs/data/lammps_mpi.csv",
+              "docs/figures/lammps_mpi.png"),
              lambda root: _lammps().mpi_fresh(root),
              lambda rel, old, new: _lammps().mpi_same(rel, old, new),
              write=lambda root, texts: _lammps().mpi_write(root, texts)),

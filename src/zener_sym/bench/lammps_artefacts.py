@@ -82,13 +82,14 @@ def law_fresh(root: Path | None) -> Texts:
 
 def law_same(rel: str, old: str, new: str) -> list[str]:
     o, n = json.loads(old), json.loads(new)
-    if [o.get(k) for k in ("lambdas", "steps", "phases")] != [n.get(k) for k in ("lambdas", "steps", "phases")]:
+    grid = ("lambdas", "steps", "phases")
+    if [o.get(k) for k in grid] != [n.get(k) for k in grid]:
         return [f"{rel}: another grid of lambdas, steps or phases"]
     bad = []
     for end in ("force", "delta"):
         for i, (ro, rn) in enumerate(zip(o["error"][end], n["error"][end])):
             for j, (x, y) in enumerate(zip(ro, rn)):
-                if not _close(str(x if x is not None else "nan"), str(y if y is not None else "nan")):
+                if not _close("nan" if x is None else str(x), "nan" if y is None else str(y)):
                     bad.append(f"{rel} {end} lambda={o['lambdas'][i]} steps={o['steps'][j]}: "
                                f"committed {x}, fresh {y}")
     return bad[:20]

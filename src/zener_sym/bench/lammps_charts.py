@@ -140,7 +140,8 @@ def mpi_chart(v: np.ndarray, e_lammps: np.ndarray, e_exact: np.ndarray,
         err = e_l - e_x
         b.hist(err * 1e3, bins=60, color=style_for("lammps")["color"])
         b.axvline(-1.0, color="#7F7F7F", ls=":", lw=0.8)
-        b.axvline(1.0, color="#7F7F7F", ls=":", lw=0.8, label=r"$\pm 10^{-3}$ (the table's promise)")
+        b.axvline(1.0, color="#7F7F7F", ls=":", lw=0.8,
+                  label=r"$\pm 10^{-3}$ (the table's promise)")
         b.set_xlabel(r"$(e_{\rm LAMMPS} - e_{\rm exact}) \times 10^3$")
         b.set_ylabel("grains")
         b.set_title("error distribution")

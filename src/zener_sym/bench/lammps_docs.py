@@ -39,7 +39,8 @@ def _steps_cell(n: float) -> str:
 
 
 def _steps() -> str:
-    out = ["| λ | force-free end, 1e-3 | force-free end, 1e-4 | δ = 0 end, 1e-3 | δ = 0 end, 1e-4 |",
+    out = ["| λ | force-free end, 1e-3 | force-free end, 1e-4 | δ = 0 end, 1e-3 "
+           "| δ = 0 end, 1e-4 |",
            "|---|---|---|---|---|"]
     for lam in STEP_LAMBDAS:
         cells = [_steps_cell(steps_required(lam, end, tol)) for end in ("force", "delta")
@@ -59,6 +60,10 @@ def _orders(root: Path) -> str:
     return "\n".join(out) + "\n"
 
 
+def _g4(x: float) -> str:
+    return "—" if math.isnan(x) else f"{x:.4g}"
+
+
 def _stability(root: Path) -> str:
     rows = _rows(root / "docs/data/lammps_stability.csv")
     out = ["| end | λ | exact e | steps per contact at the limit | LAMMPS's e there | "
@@ -67,7 +72,7 @@ def _stability(root: Path) -> str:
         lim = float(r["steps_at_limit"])
         out.append(f"| {r['contact_end']} | {float(r['lambda']):g} | {float(r['e_exact']):.4g} | "
                    f"{'above the ladder (50000)' if math.isnan(lim) else f'{lim:g}'} | "
-                   f"{'—' if math.isnan(float(r['e_at_limit'])) else format(float(r['e_at_limit']), '.4g')} | "
+                   f"{_g4(float(r['e_at_limit']))} | "
                    f"{r['failure_beyond']} |")
     return "\n".join(out) + "\n"
 

@@ -168,7 +168,8 @@ class Comparison:
         a = np.abs(self.error)
         return {"max_abs_error": float(a.max()), "p50_abs_error": float(np.quantile(a, 0.5)),
                 "p90_abs_error": float(np.quantile(a, 0.9)),
-                "p99_abs_error": float(np.quantile(a, 0.99)), "mean_error": float(self.error.mean())}
+                "p99_abs_error": float(np.quantile(a, 0.99)),
+                "mean_error": float(self.error.mean())}
 
 
 def compare(deck: Deck, e_lammps: FloatArray) -> Comparison:

@@ -106,7 +106,8 @@ def run_lam(session: Session, c: LammpsContact, lam: float, contact_end: str, st
 
 # --- convergence ---------------------------------------------------------------------------------
 
-def convergence(lams: Sequence[float] = CONVERGENCE_LAMBDAS, ends: Sequence[str] = ("force", "delta"),
+def convergence(lams: Sequence[float] = CONVERGENCE_LAMBDAS,
+                ends: Sequence[str] = ("force", "delta"),
                 geometries: Sequence[str] = ("wall", "pair"), ladder: Sequence[int] = LADDER,
                 log: Callable[[str], object] = lambda s: None) -> list[dict[str, Any]]:
     """Rows (geometry, contact_end, lambda, steps, e, e_exact, e_err, tau_d_err, F_m_err,
@@ -251,7 +252,8 @@ def stability(lams: Sequence[float] = STABILITY_LAMBDAS, steps: Sequence[float] 
         for end in ("force", "delta"):
             for lam in lams:
                 e_ex = float(summary(lam, model="exact", contact_end=end).e)
-                limit, e_limit, failure, e_fail = float("nan"), float("nan"), "none on the ladder", float("nan")
+                limit = e_limit = e_fail = float("nan")
+                failure = "none on the ladder"
                 for n in steps:
                     runs = [run_lam(ses, c, lam, end, n, phase=ph, record=False) for ph in phases]
                     bad = [r for r in runs if r.status != "ok"]

@@ -33,7 +33,8 @@ def run(args: argparse.Namespace, out: Out = print) -> int:
     """``zener-sym lammps``: 0, or 2 with one line on stderr for bad input."""
     try:
         if args.wall is not None and (args.sphere2 is not None or args.radius2 is not None):
-            raise ValueError("give either --wall or a second sphere (--sphere2, --radius2), not both")
+            raise ValueError("give either --wall or a second sphere (--sphere2, --radius2), "
+                             "not both")
         if (args.A is None) == (args.e is None):
             raise ValueError("give either --A TIME or --e E with --at SPEED")
         if args.e is not None and args.at is None:

@@ -228,7 +228,8 @@ def steps_required(lam: float, contact_end: str, tol: float = E_TOLERANCE) -> fl
     if not math.isfinite(e0):
         return float(steps[k])
     f = (e0 - math.log(tol)) / (e0 - e1)
-    return float(math.exp(math.log(steps[k - 1]) + f * (math.log(steps[k]) - math.log(steps[k - 1]))))
+    lo, hi = math.log(steps[k - 1]), math.log(steps[k])
+    return float(math.exp(lo + f * (hi - lo)))
 
 
 # --- from a target to the lines ----------------------------------------------------------------
@@ -390,7 +391,8 @@ def lammps_setup(sphere: Material | str, radius: float | str, *,
         if v_at is None:
             raise ValueError("e needs the speed it is measured at: give at (e.g. '1 m/s')")
         if isinstance(e, bool) or not isinstance(e, (int, float)) or not 0.0 < float(e) <= 1.0:
-            raise ValueError(f"e (coefficient of restitution) must be a number in (0, 1], got {e!r}")
+            raise ValueError(f"e (coefficient of restitution) must be a number in (0, 1], "
+                             f"got {e!r}")
         lam_e = float(np.asarray(lam_from_summary(e=float(e), contact_end=end)))
         A_s = lam_e / float(c.rate(v_at))
     else:
@@ -403,5 +405,6 @@ def lammps_setup(sphere: Material | str, radius: float | str, *,
         if v.size == 0:
             raise ValueError("give at least one speed in speeds")
     eta = c.damping(A_s)
-    return LammpsSetup(contact=c, A_s=A_s, damping=eta, contact_end=end, lines=input_lines(c, eta, end),
+    return LammpsSetup(contact=c, A_s=A_s, damping=eta, contact_end=end,
+                       lines=input_lines(c, eta, end),
                        table=_table(c, A_s, v, end))

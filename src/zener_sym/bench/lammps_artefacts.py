@@ -106,27 +106,30 @@ def convergence_fresh(root: Path | None) -> Texts:
 
 
 def orders_csv(rows: list[dict[str, Any]]) -> str:
-    """The observed orders and extrapolations as CSV text."""
+    """The observed orders and extrapolations as CSV text (6 digits; the order 4)."""
+    def cell(c: str, x: Any) -> Any:
+        return (f"{x:.4g}" if c == "order" else f"{x:.6g}") if isinstance(x, float) else x
+
     cols = ["geometry", "contact_end", "lambda", "steps_used", "order", "e_exact", "e_finest_err",
             "e_extrapolated_err", "resolution"]
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(cols)
-    for r in rows:
-        w.writerow([f"{r[c]:.4g}" if isinstance(r[c], float) and c == "order"
-                    else (f"{r[c]:.6g}" if isinstance(r[c], float) else r[c]) for c in cols])
-    return buf.getvalue()
+    return lv.table_csv([{c: cell(c, r[c]) for c in cols} for r in rows], cols)
 
 
-def convergence_write(root: Path | None, texts: Texts) -> list[Path]:
-    from .lammps_charts import convergence_chart
-
+def _write(root: Path | None, texts: Texts) -> list[Path]:
+    """Write every text to its file of the checkout."""
     out = []
     for rel, text in texts.items():
         p = _at(root, rel)
         p.parent.mkdir(parents=True, exist_ok=True)
         p.write_text(text, encoding="utf-8")
         out.append(p)
+    return out
+
+
+def convergence_write(root: Path | None, texts: Texts) -> list[Path]:
+    from .lammps_charts import convergence_chart
+
+    out = _write(root, texts)
     rows = _CONV_ROWS.get(texts[CONVERGENCE]) or lv.convergence()
     chart = _at(root, CONVERGENCE_CHART)
     convergence_chart(rows, chart)
@@ -146,13 +149,11 @@ def stability_fresh(root: Path | None) -> Texts:
 def stability_write(root: Path | None, texts: Texts) -> list[Path]:
     from .lammps_charts import stability_chart
 
-    p = _at(root, STABILITY)
-    p.parent.mkdir(parents=True, exist_ok=True)
-    p.write_text(texts[STABILITY], encoding="utf-8")
+    out = _write(root, texts)
     rows = _STAB_ROWS.get(texts[STABILITY]) or lv.stability()
     chart = _at(root, STABILITY_CHART)
     stability_chart(rows, chart)
-    return [p, chart]
+    return out + [chart]
 
 
 _MPI: dict[str, dict[str, Any]] = {}
@@ -177,12 +178,7 @@ def mpi_same(rel: str, old: str, new: str) -> list[str]:
 def mpi_write(root: Path | None, texts: Texts) -> list[Path]:
     from .lammps_charts import mpi_chart
 
-    out = []
-    for rel, text in texts.items():
-        p = _at(root, rel)
-        p.parent.mkdir(parents=True, exist_ok=True)
-        p.write_text(text, encoding="utf-8")
-        out.append(p)
+    out = _write(root, texts)
     result = _MPI.get(texts[MPI_SUMMARY])
     if result is None:
         from . import lammps_mpi

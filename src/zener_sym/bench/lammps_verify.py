@@ -39,7 +39,7 @@ from .lammps_run import Collision, Session, collide
 __all__ = ["CONVERGENCE_LAMBDAS", "LADDER", "LAW_LAMBDAS", "LAW_STEPS", "PHASES",
            "STABILITY_LAMBDAS", "STABILITY_STEPS", "contacts", "run_lam", "convergence",
            "convergence_csv", "order_rows", "build_error_law", "error_law_json", "stability",
-           "stability_csv", "lammps_version"]
+           "stability_csv", "lammps_version", "table_csv"]
 
 #: The lambdas of the convergence study (8, from 1e-3 to 30).
 CONVERGENCE_LAMBDAS = (1e-3, 1e-2, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0)
@@ -144,16 +144,20 @@ def _fmt(x: Any) -> str:
     return str(x)
 
 
-def convergence_csv(rows: Sequence[dict[str, Any]]) -> str:
-    """The ladder's rows as CSV text."""
-    cols = ["geometry", "contact_end", "lambda", "steps", "e", "e_exact", "e_err", "tau_d_err",
-            "F_m_err", "status"]
+def table_csv(rows: Sequence[dict[str, Any]], cols: Sequence[str]) -> str:
+    """``rows``' columns ``cols`` as CSV text (floats to 10 digits, NaN as nan)."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(cols)
     for r in rows:
         w.writerow([_fmt(r[c]) for c in cols])
     return buf.getvalue()
+
+
+def convergence_csv(rows: Sequence[dict[str, Any]]) -> str:
+    """The ladder's rows as CSV text."""
+    return table_csv(rows, ["geometry", "contact_end", "lambda", "steps", "e", "e_exact", "e_err",
+                            "tau_d_err", "F_m_err", "status"])
 
 
 def order_rows(rows: Sequence[dict[str, Any]]) -> list[dict[str, Any]]:
@@ -270,12 +274,6 @@ def stability(lams: Sequence[float] = STABILITY_LAMBDAS, steps: Sequence[float] 
 
 def stability_csv(rows: Sequence[dict[str, Any]]) -> str:
     """The stability rows as CSV text."""
-    cols = ["contact_end", "lambda", "e_exact", "steps_at_limit", "e_at_limit", "failure_beyond",
-            "e_beyond"]
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(cols)
-    for r in rows:
-        w.writerow([_fmt(r[c]) for c in cols])
-    return buf.getvalue()
+    return table_csv(rows, ["contact_end", "lambda", "e_exact", "steps_at_limit", "e_at_limit",
+                            "failure_beyond", "e_beyond"])
 

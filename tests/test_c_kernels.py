@@ -331,7 +331,9 @@ CLANG = shutil.which("clang")
     ("gcc", ["-O3"]),                   # a CMake Release build
     ("gcc", ["-O2", "-U__SSE2__", "-U__AVX__"]),  # the contraction's plain C loops
     # GNU C contracts a * b + c into fused multiply-adds where the processor has them (moving a
-    # history by up to 2.5e-11 before the source turned contraction off)
+    # history by up to 2.5e-11 before the source turned contraction off); and where the processor
+    # has AVX512-FP16, GNU C says FLT_EVAL_METHOD 16 (the exp pass once took that for x87 and
+    # fell back to libm's exp, a last bit apart)
     ("gcc", ["-std=gnu11", "-O3", "-march=native", "-ffp-contract=fast"]),
     ("clang", ["-O3", "-march=native"]),
     # clang's default contraction (-ffp-contract=on) obeys the source's STDC FP_CONTRACT OFF;

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 88bbb494d6bbccef
+ * Inputs hash: 5f1ec4a3654920d2
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -26684,8 +26684,10 @@ static void zs__exp_pass(size_t h, double *x)
     double y[ZS__BLOCK];
     unsigned long long big = 0;
     size_t i;
-#if FLT_EVAL_METHOD != 0
-    /* wider intermediates (x87) would not round kd to an integer: libm's exp */
+#if FLT_EVAL_METHOD == 2 || FLT_EVAL_METHOD < 0
+    /* doubles evaluated wider (x87: 2; indeterminate: -1) would not round kd to an integer:
+       libm's exp. Not "!= 0": GNU C on a processor with AVX512-FP16 says 16 (only _Float16
+       is evaluated wider, in float), and 1 is doubles as doubles; the pass is exact there */
     for (i = 0; i < 2 * h; i++)
         x[i] = exp(x[i]);
     return;

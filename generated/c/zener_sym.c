@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: d00dd983bc6d0177
+ * Inputs hash: 447d5642d95304bd
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -26609,7 +26609,7 @@ static void zs__ham_params(double lam, double *k_out, double *beta_out, double *
     *omega0_out = omega0;
 }
 
-/* sin on the first half wave [0, pi], 0 beyond (ham.chebyshev.half_wave_sin) */
+/* sin on the first half wave [0, pi], 0 beyond (numerics.elementary.half_wave_sin) */
 static double zs__half_wave_sin(double theta)
 {
     return theta < ZS__PI ? sin(theta) : 0.0;
@@ -27695,7 +27695,7 @@ int zs_ham0_history(double lam, size_t n, const double *tau, double *delta, doub
 }
 
 /* K_cc, K_sc, K_ss (a, theta) on [0, T] (left, T <= pi/2) or [pi - r, pi] (right) by the
-   Gauss-Jacobi rule with the square-root singularity in the weight (ham.quadrature) */
+   Gauss-Jacobi rule with the square-root singularity in the weight (numerics.sqrt_integrals) */
 static void zs__K_piece(double a, double T, int right, double K[3])
 {
     int i;

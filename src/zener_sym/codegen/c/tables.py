@@ -226,7 +226,7 @@ def ham1_table_c(ns: dict[str, Any]) -> tuple[str, int]:
             raise ValueError(f"ham1 table: unknown piece kind {kind!r}")
         kinds.append("1" if kind == "sqrt" else "0")
         starts.append(a)
-        # the Chebyshev variable's ends (ham.table_build.variable_ends)
+        # the Chebyshev variable's ends (numerics.cheb_table.Pieces)
         ga.append(a if kind == "lam" else 0.0)
         gb.append(b if kind == "lam" else math.sqrt(b - a))
         for key in HAM1_KEYS:

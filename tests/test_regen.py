@@ -128,6 +128,29 @@ def test_table_check_compares_the_text_too(tmp_path):
     assert artefacts.text_skeleton(nudged) == artefacts.text_skeleton(text)
 
 
+def test_regen_keeps_committed_numbers_that_agree(tmp_path, monkeypatch):
+    """``zener-sym regen TABLE`` on a machine whose rebuild differs from the committed numbers
+    by rounding (another processor, another libm) writes the committed file byte for byte; a
+    rebuild beyond the check's tolerance is written as built."""
+    from zener_sym.ham import table_build as hb
+
+    art = artefacts.get("ham1-table")
+    (rel, text), = _copy(art, tmp_path).items()
+    real = hb.build_tables()
+
+    def nudged(by):
+        return {**real, "summary": {k: [c * (1.0 + by) for c in v]
+                                    for k, v in real["summary"].items()}}
+
+    monkeypatch.setattr(hb, "build_tables", lambda: nudged(1e-13))
+    assert artefacts.build(art, tmp_path) == []  # nothing written: the committed bytes stay
+    assert (tmp_path / rel).read_text(encoding="utf-8") == text
+    monkeypatch.setattr(hb, "build_tables", lambda: nudged(1e-9))
+    assert artefacts.build(art, tmp_path) == [tmp_path / rel]
+    assert (tmp_path / rel).read_text(encoding="utf-8") == hb.render(nudged(1e-9))
+    assert artefacts.check(art, tmp_path) == []
+
+
 def test_text_skeleton_masks_numbers_only():
     sk = artefacts.text_skeleton
     assert sk("X = (1.5, -2e-07, 3,)\n# scipy 1.17.1, hash 7b76e73fe6") == sk(

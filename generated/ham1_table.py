@@ -5,9 +5,9 @@ float64 ham1 summary (zener_sym.ham.spectral.summary_numpy); `zener-sym regen --
 rebuilds and compares numerically (the node values come from floating-point root finding and
 quadrature).
 
-Inputs hash: d15a6fdc780cbf3d
+Inputs hash: 056cda1aec8b4033
 """
-INPUTS_HASH = 'd15a6fdc780cbf3d'
+INPUTS_HASH = '056cda1aec8b4033'
 #: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)
 LAM_CONT = 2.0304532806603661
 #: the table's description (zener_sym.numerics.cheb_table.TableSpec): per lambda
@@ -23,8 +23,6 @@ TABLE_NODES = (28, 28, 36)
 TABLE_TRIM = 1e-15
 TABLE_CHECK_RTOL = 1e-12
 TABLE_DIGITS = 17
-#: (kind, start, end) per lambda piece (TABLE_PIECES; the name older readers use)
-PIECES = TABLE_PIECES
 
 #: field -> one tuple of Chebyshev coefficients per lambda piece
 COEF = {
@@ -59,3 +57,5 @@ COEF = {
         (0.24007367605404833, -0.022818725841127294, -0.0047602692793037495, 0.00050186135654251007, 3.5154910784147451e-05, -7.4177214912513056e-06, -1.297172860457432e-07, 8.469124421900398e-08, -9.1282707629682103e-10, -7.0847649621952336e-10, 3.0697356006963161e-11, 2.6706050565428185e-12, -1.1260682056951632e-12, -9.7260741127591643e-14, 1.5872936645622282e-14, 7.6657430403415106e-15, 2.1926904736346842e-15, 4.3021142204224816e-16, -1.5265566588595902e-16, -2.4980018054066022e-16, -1.8539857149502126e-16, -1.3010426069826053e-16, -2.2291196666301971e-16, -2.6541269182445149e-16, -4.1416522988946269e-17, 3.4694469519536142e-17, -1.0516761073109393e-16, 1.3183898417423734e-16, 3.0292608699244994e-16, 1.1796119636642288e-16, 1.4484941024406339e-16, 7.0082828429463007e-16,),
     ),
 }
+#: (kind, start, end) per lambda piece (TABLE_PIECES)
+PIECES = TABLE_PIECES

@@ -112,7 +112,8 @@ def test_table_check_compares_the_text_too(tmp_path):
     art = artefacts.get("ham1-table")
     (rel, text), = _copy(art, tmp_path).items()
     assert artefacts.check(art, tmp_path) == []
-    drifted = text.replace("#: field -> one tuple of Chebyshev", "#: field -> one tuple of Legendre")
+    drifted = text.replace("#: field -> one tuple of Chebyshev",
+                           "#: field -> one tuple of Legendre")
     assert drifted != text
     (tmp_path / rel).write_text(drifted, encoding="utf-8")
     problems = artefacts.check(art, tmp_path)

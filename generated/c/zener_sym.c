@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 12534cb0d780976e
+ * Inputs hash: d9b286ffd6b3dad2
  * SymPy version: 1.14.0
  */
 #include <float.h>

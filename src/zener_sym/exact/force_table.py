@@ -19,8 +19,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.cheb_table import (Index, SummaryTable, TableSpec, history_rows,
-                                   line_coefficients, spec_of)
+from ..numerics.cheb_table import Index, SummaryTable, history_tables, line_coefficients
 from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
@@ -60,12 +59,9 @@ def _tables() -> _Tables:
     """The generated table, loaded on first use; its layout is read from it."""
     t = importlib.import_module("zener_sym.generated.exact_force_table")
     lay = ForceLayout.of(t)
-    spec: TableSpec = spec_of(t)  # the table's description, written into it
-    summary = SummaryTable(spec.pieces, spec.fields, t.SUMMARY, "force-end table",
-                           "; integrate instead (backend='scipy')")
-    return {"layout": lay, "summary": summary,
-            "history": {piece: history_rows([t.HISTORY[(piece, k)] for k in lay.HISTORY_KEYS])
-                        for piece in lay.TIME_PIECES}}
+    return {"layout": lay, "history": history_tables(t.HISTORY, lay.TIME_PIECES, lay.HISTORY_KEYS),
+            "summary": SummaryTable.of(t, "force-end table",
+                                       "; integrate instead (backend='scipy')")}
 
 
 def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:

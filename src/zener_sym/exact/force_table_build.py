@@ -48,7 +48,7 @@ import numpy as np
 from ..codegen import inputs_hash
 from ..codegen.tables import table_module
 from ..numerics import cheb_table_build as engine
-from ..numerics.cheb_table import TableSpec, spec_assignments
+from ..numerics.cheb_table import TableSpec
 from ..numerics.cheb_table_build import NodeData, Tables
 from ..typing import FloatArray
 from . import table_build as _tb
@@ -132,22 +132,6 @@ def piece_nodes(a: float, b: float) -> FloatArray:
     return engine.piece_nodes("log" if is_log_piece(a) else "sqrt_lam", a, b, N_LAM)
 
 
-def sub_nodes(piece: str) -> FloatArray:
-    """Reduced times y of the Chebyshev points of every sub-piece of a time piece.
-
-    Parameters
-    ----------
-    piece : str
-        A key of ``N_SUB``.
-
-    Returns
-    -------
-    ndarray
-        [sub-piece, point].
-    """
-    return engine.sub_nodes(N_SUB[piece], N_TIME[piece])
-
-
 def node_data(lam: float, log_piece: bool) -> NodeData:
     """Summary values and history samples of one lambda > 0, from ``force_end.solve``.
 
@@ -172,7 +156,7 @@ def node_data(lam: float, log_piece: bool) -> NodeData:
            "log_e": np.log(s.e), "xi_over_lam": s.xi / lam, "log_F_m": np.log(s.F_m),
            "log_int_F2": np.log(s.int_F2), "log_tau_p": 0.0 if log_piece else np.log(tau_p)}
     for piece in TIME_PIECES:
-        y = sub_nodes(piece)
+        y = engine.sub_nodes(N_SUB[piece], N_TIME[piece])
         tau = time_of(piece, y, s.tau_dc, s.tau_d, tau_p, log_piece)
         h = s.history(tau.ravel())
         d = np.asarray(h["delta"], dtype=float).reshape(y.shape)
@@ -234,14 +218,12 @@ def render(tables: Tables | None = None) -> str:
     import scipy
 
     t = build_tables() if tables is None else tables
-    lines = ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads it back)",
-             *LAYOUT.assignments(), *spec_assignments(SPEC), "",
-             "#: stored series -> one tuple of Chebyshev coefficients per lambda piece",
-             *engine.render_summary("SUMMARY", t["summary"], SUMMARY_KEYS, SPEC.digits), "",
-             "#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
-             "#: [time degree][lambda degree] as the string \"rows cols values...\"",
-             "#: (zener_sym.numerics.cheb_table.parse_array)",
-             *engine.render_history(t["history"], t.get("weights", {}), _tb.HISTORY_QUANTUM)]
+    lines = engine.table_lines(
+        t, SPEC, ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads "
+                  "it back)", *LAYOUT.assignments()],
+        "stored series -> one tuple of Chebyshev coefficients per lambda piece",
+        ("#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
+         *_tb.HISTORY_NOTE[1:]), _tb.HISTORY_QUANTUM)
     title = ("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
              f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}.")
     provenance = (f"Built by zener_sym.exact.force_table_build from scipy {scipy.__version__} "
@@ -253,17 +235,10 @@ def render(tables: Tables | None = None) -> str:
 
 
 def table_path() -> pathlib.Path:
-    """Where the generated table lives.
-
-    Returns
-    -------
-    pathlib.Path
-        ``generated/exact_force_table.py``.
-    """
+    """Where the generated table lives: ``generated/exact_force_table.py``."""
     from ..codegen import generated_dir
 
-    path: pathlib.Path = generated_dir() / "exact_force_table.py"
-    return path
+    return generated_dir() / "exact_force_table.py"
 
 
 def as_tables(t: Mapping[str, Any]) -> Tables:

@@ -9,7 +9,6 @@ constants and writes them into ``generated/exact_force_table.py``) and the runti
 from __future__ import annotations
 
 import dataclasses
-from types import ModuleType
 
 import numpy as np
 
@@ -37,22 +36,6 @@ class ForceLayout(WrittenConstants):
     TIME_PIECES: tuple[str, ...] = ("C", "R")
     #: The tabulated history fields: f (delta's log-part) and v = delta'.
     HISTORY_KEYS: tuple[str, ...] = ("f", "v")
-
-    @classmethod
-    def of(cls, module: ModuleType) -> "ForceLayout":
-        """The layout written into ``generated/exact_force_table.py``.
-
-        Parameters
-        ----------
-        module : module
-            The generated table module.
-
-        Returns
-        -------
-        ForceLayout
-        """
-        layout: ForceLayout = super().of(module)
-        return layout
 
 
 def recovery_z_end(tau_dc: float | FloatArray, tau_d: float | FloatArray,

@@ -28,8 +28,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.cheb_table import (Index, SummaryTable, TableSpec, history_rows,
-                                   line_coefficients, spec_of)
+from ..numerics.cheb_table import Index, SummaryTable, history_tables, line_coefficients
 from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
@@ -74,13 +73,10 @@ class _Tables(TypedDict):
 def _tables() -> _Tables:
     """The generated table, loaded on first use (importing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
-    layout = Layout.of(t)
-    spec: TableSpec = spec_of(t)  # the table's description, written into it
-    summary = SummaryTable(spec.pieces, spec.fields, t.SUMMARY, "exact table",
-                           "; integrate instead (backend='scipy')")
-    return {"layout": layout, "summary": summary, "HISTORY_LAM_MAX": float(layout.HISTORY_TO),
-            "history": {piece: history_rows([t.HISTORY[(piece, k)] for k in layout.HISTORY_KEYS])
-                        for piece in layout.TIME_PIECES}}
+    layout = Layout.of(t)  # the time pieces and maps; the lambda pieces are in TABLE_*
+    return {"layout": layout, "HISTORY_LAM_MAX": float(layout.HISTORY_TO),
+            "summary": SummaryTable.of(t, "exact table", "; integrate instead (backend='scipy')"),
+            "history": history_tables(t.HISTORY, layout.TIME_PIECES, layout.HISTORY_KEYS)}
 
 
 def __getattr__(name: str) -> float:

@@ -65,7 +65,7 @@ import numpy as np
 from ..codegen import inputs_hash
 from ..codegen.tables import table_module
 from ..numerics import cheb_table_build as engine
-from ..numerics.cheb_table import TableSpec, spec_assignments
+from ..numerics.cheb_table import TableSpec
 from ..numerics.cheb_table_build import NodeData, Tables
 from ..numerics.chebyshev import cheb_nodes  # noqa: F401 - tests place points between the nodes
 from ..typing import FloatArray, RealArrayLike
@@ -133,6 +133,11 @@ HISTORY_QUANTUM = 1e-15
 CHECK_RTOL = 1e-10
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest_over_lam")
+#: The comment above the history in the generated table.
+HISTORY_NOTE = (
+    "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
+    "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
+    "#: (zener_sym.numerics.cheb_table.parse_array)")
 #: The layout the runtime reads back from the generated table (``table_layout.Layout.of``).
 LAYOUT = Layout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, HISTORY_TO=HISTORY_TO,
                 C_STRETCH=C_STRETCH, C_END=C_END, S_ORBIT=S_ORBIT, S_TRANSIENT=S_TRANSIENT,
@@ -522,14 +527,11 @@ def render(tables: Tables | None = None) -> str:
     import scipy
 
     t = build_tables() if tables is None else tables
-    lines = ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
-             *LAYOUT.assignments(), *spec_assignments(SPEC), "",
-             "#: field -> one tuple of Chebyshev coefficients per lambda piece",
-             *engine.render_summary("SUMMARY", t["summary"], SUMMARY_KEYS, SPEC.digits), "",
-             "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
-             "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
-             "#: (zener_sym.numerics.cheb_table.parse_array)",
-             *engine.render_history(t["history"], t.get("weights", {}), HISTORY_QUANTUM)]
+    lines = engine.table_lines(
+        t, SPEC, ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
+                  *LAYOUT.assignments()],
+        "field -> one tuple of Chebyshev coefficients per lambda piece", HISTORY_NOTE,
+        HISTORY_QUANTUM)
     title = ("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
              f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}.")
     provenance = (f"Built by zener_sym.exact.table_build from scipy {scipy.__version__} solves at "
@@ -542,17 +544,10 @@ def render(tables: Tables | None = None) -> str:
 
 
 def table_path() -> pathlib.Path:
-    """Where the generated table lives.
-
-    Returns
-    -------
-    pathlib.Path
-        ``generated/exact_table.py``.
-    """
+    """Where the generated table lives: ``generated/exact_table.py``."""
     from ..codegen import generated_dir
 
-    path: pathlib.Path = generated_dir() / "exact_table.py"
-    return path
+    return generated_dir() / "exact_table.py"
 
 
 def as_tables(t: Mapping[str, Any], spec: TableSpec = SPEC) -> Tables:

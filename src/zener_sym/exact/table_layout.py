@@ -9,7 +9,6 @@ imports the builder. The time pieces and their maps are described in the builder
 from __future__ import annotations
 
 import dataclasses
-from types import ModuleType
 
 import numpy as np
 import numpy.typing as npt
@@ -46,22 +45,6 @@ class Layout(WrittenConstants):
     TIME_PIECES: tuple[str, ...] = ("C", "A", "M", "B")
     #: The tabulated history fields: f (delta's log-part) and the impulse I.
     HISTORY_KEYS: tuple[str, ...] = ("f", "I")
-
-    @classmethod
-    def of(cls, module: ModuleType) -> "Layout":
-        """The layout written into ``generated/exact_table.py`` (``WrittenConstants.of``).
-
-        Parameters
-        ----------
-        module : module
-            The generated table module.
-
-        Returns
-        -------
-        Layout
-        """
-        layout: Layout = super().of(module)
-        return layout
 
     def split_time(self, lam: RealArrayLike, log_piece: bool | npt.NDArray[np.bool_],
                    tau_dc: float | FloatArray, tau_w0: float | FloatArray) -> FloatArray:

@@ -22,7 +22,7 @@ import importlib
 import numpy as np
 import numpy.typing as npt
 
-from ..numerics.cheb_table import Pieces, SummaryTable, spec_of
+from ..numerics.cheb_table import Pieces, SummaryTable
 from ..typing import FloatArray, RealArrayLike
 
 __all__ = ["SUMMARY_RTOL", "in_range", "summary", "lam_max", "variable_ends"]
@@ -61,8 +61,7 @@ def variable_ends(kind: str, a: float, b: float) -> tuple[float, float]:
 def _tables() -> SummaryTable:
     """The generated table (the one source of its pieces and fields), loaded on first use."""
     t = importlib.import_module("zener_sym.generated.ham1_table")
-    spec = spec_of(t)
-    return SummaryTable(spec.pieces, spec.fields, t.COEF, "ham1 table", top_open=True)
+    return SummaryTable.of(t, "ham1 table", summary_name="COEF", top_open=True)
 
 
 def lam_max() -> float:

@@ -44,7 +44,7 @@ import numpy as np
 from ..codegen import inputs_hash
 from ..codegen.tables import table_module
 from ..numerics import cheb_table_build as engine
-from ..numerics.cheb_table import TableSpec, spec_assignments
+from ..numerics.cheb_table import TableSpec
 from ..numerics.cheb_table_build import NodeData
 from ..typing import FloatArray, RealArrayLike
 
@@ -139,16 +139,18 @@ def pieces(lam_cont: float) -> list[tuple[str, float, float]]:
 
 
 def spec(lam_cont: float) -> TableSpec:
-    """The table's description for the engine.
+    """The table's description for the engine: :func:`pieces`, ``KEYS``, ``N_NODES``, ``TRIM``,
+    ``CHECK_RTOL`` and 17 digits.
 
     Parameters
     ----------
     lam_cont : float
-        Start of the piece in sqrt(lambda - lam_cont) (:func:`continuation_lambda`).
+        As for :func:`pieces`.
 
     Returns
     -------
     TableSpec
+        The description, written into the table by :func:`render`.
     """
     return TableSpec(pieces=tuple(pieces(lam_cont)), fields=KEYS, nodes=N_NODES, trim=TRIM,
                      check_rtol=CHECK_RTOL, digits=17)
@@ -242,14 +244,14 @@ def render(tables: Tables | None = None) -> str:
     """
     t = build_tables() if tables is None else tables
     sp = cast(TableSpec, t["spec"])
-    lines = [
-        "#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
-        f"LAM_CONT = {float(sp.pieces[-1][1]):.17g}",
-        *spec_assignments(sp),
-        "#: (kind, start, end) per lambda piece (TABLE_PIECES; the name older readers use)",
-        "PIECES = TABLE_PIECES", "",
-        "#: field -> one tuple of Chebyshev coefficients per lambda piece",
-        *engine.render_summary("COEF", t["summary"], KEYS, sp.digits)]
+    lines = engine.table_lines(
+        cast(engine.Tables, t), sp,
+        ["#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
+         f"LAM_CONT = {float(sp.pieces[-1][1]):.17g}"],
+        "field -> one tuple of Chebyshev coefficients per lambda piece", summary_name="COEF")
+    # the pieces under the name the older readers use, after the summary (the description
+    # comes first)
+    lines += ["#: (kind, start, end) per lambda piece (TABLE_PIECES)", "PIECES = TABLE_PIECES"]
     title = "Chebyshev tables of the first-order HAM summary (Eq. 42) for 0 <= lambda < lam_crit."
     provenance = ("Built by zener_sym.ham.table_build from the float64 ham1 summary "
                   "(zener_sym.ham.spectral.summary_numpy); `zener-sym regen --check ham1-table` "

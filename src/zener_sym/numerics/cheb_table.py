@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -28,7 +28,7 @@ from ..typing import FloatArray, RealArrayLike
 from .chebyshev import cheb_to_monomial
 
 __all__ = ["PIECE_KINDS", "TableSpec", "Pieces", "SummaryTable", "parse_array", "history_rows",
-           "line_coefficients", "spec_assignments", "spec_of", "WrittenConstants"]
+           "history_tables", "line_coefficients", "spec_assignments", "spec_of", "WrittenConstants"]
 
 #: The Chebyshev variable g of a lambda piece [start, end], by kind.
 PIECE_KINDS = {"lam": "lambda", "log": "ln lambda", "sqrt_lam": "sqrt(lambda)",
@@ -36,6 +36,7 @@ PIECE_KINDS = {"lam": "lambda", "log": "ln lambda", "sqrt_lam": "sqrt(lambda)",
 
 #: Piece indices.
 Index = npt.NDArray[np.intp]
+_W = TypeVar("_W", bound="WrittenConstants")
 
 
 class WrittenConstants:
@@ -44,7 +45,7 @@ class WrittenConstants:
     beside its :class:`TableSpec` (the exact tables' time pieces and maps)."""
 
     @classmethod
-    def of(cls, module: Any) -> Any:
+    def of(cls: type[_W], module: Any) -> _W:
         """The constants written into a generated module (its upper-case names).
 
         Parameters
@@ -54,7 +55,8 @@ class WrittenConstants:
 
         Returns
         -------
-        The dataclass instance.
+        WrittenConstants
+            An instance of the dataclass ``of`` is called on.
         """
         fields = dataclasses.fields(cls)  # type: ignore[arg-type]
         return cls(**{f.name: getattr(module, f.name) for f in fields})
@@ -107,7 +109,8 @@ class TableSpec:
             if kind not in PIECE_KINDS:
                 raise ValueError(f"unknown piece kind {kind!r}; allowed: {', '.join(PIECE_KINDS)}")
             if not float(a) < float(b):
-                raise ValueError(f"piece ({kind!r}, {a!r}, {b!r}): its start must lie below its end")
+                raise ValueError(f"piece ({kind!r}, {a!r}, {b!r}): its start must lie below its "
+                                 "end")
         for (_, _, b), (_, a, _) in zip(self.pieces[:-1], self.pieces[1:]):
             if float(a) != float(b):
                 raise ValueError(f"pieces must be contiguous: one ends at {b!r}, the next starts "
@@ -290,6 +293,27 @@ class SummaryTable:
         self.what, self.hint, self.top_open = what, hint, top_open
         self.lo, self.hi = float(self.pieces.edges[0]), float(self.pieces.edges[-1])
 
+    @classmethod
+    def of(cls, module: Any, what: str, hint: str = "", summary_name: str = "SUMMARY",
+           top_open: bool = False) -> "SummaryTable":
+        """The summary of a generated table module, with the description written into it.
+
+        Parameters
+        ----------
+        module : module
+            The generated table module (``TABLE_*`` and the summary series).
+        what, hint, top_open
+            As for the constructor.
+        summary_name : str
+            The name the series are assigned to.
+
+        Returns
+        -------
+        SummaryTable
+        """
+        spec = spec_of(module)
+        return cls(spec.pieces, spec.fields, getattr(module, summary_name), what, hint, top_open)
+
     def in_range(self, lam: RealArrayLike, hi: float | None = None) -> npt.NDArray[np.bool_]:
         """Boolean mask: lambda inside the range [lo, hi] ([lo, hi) for an open top).
 
@@ -434,6 +458,28 @@ def history_rows(mats: Sequence[Sequence[Sequence[str | RealArrayLike]]],
     need = np.array([max([c.shape[0] for per in arrs for c in per[p]] or [1])
                      for p in range(n_lam)])
     return rows, n_sub, deg, need
+
+
+def history_tables(history: Mapping[tuple[str, str], Any], time_pieces: Sequence[str],
+                   keys: Sequence[str]) -> dict[str, tuple[list[FloatArray | None], int, int,
+                                                          npt.NDArray[np.int_]]]:
+    """``history_rows`` of every time piece of a generated module's HISTORY.
+
+    Parameters
+    ----------
+    history : mapping
+        (time piece, field) -> per lambda piece, per sub-piece, a matrix string.
+    time_pieces : sequence of str
+        The time pieces.
+    keys : sequence of str
+        The two fields, in the order of the pair (real part first).
+
+    Returns
+    -------
+    dict
+        time piece -> ``history_rows``' result.
+    """
+    return {piece: history_rows([history[(piece, k)] for k in keys]) for piece in time_pieces}
 
 
 def line_coefficients(rows: Sequence[FloatArray | None], ip: Index, tl: FloatArray, deg: int,

@@ -22,11 +22,12 @@ from typing import Any, TypedDict
 import numpy as np
 
 from ..typing import FloatArray
-from .cheb_table import Pieces, TableSpec, parse_array, spec_of
+from .cheb_table import Pieces, TableSpec, parse_array, spec_assignments, spec_of
 from .chebyshev import cheb_coefficients, cheb_nodes, coefficient_difference, trim_trailing
 
 __all__ = ["NodeData", "Tables", "piece_nodes", "sub_nodes", "fit", "build_tables",
            "history_coefficients", "format_quantised", "render_summary", "render_history",
+           "table_lines",
            "stored_tables", "compare"]
 
 #: One lambda node's data: summary values by name, and per (time piece, field) the history
@@ -304,6 +305,41 @@ def render_history(history: Mapping[tuple[str, str], Sequence[Sequence[Any]]],
     return lines + ["}"]
 
 
+def table_lines(t: Tables, spec: TableSpec, head: Sequence[str], summary_note: str,
+                history_note: Sequence[str] = (), quantum: float = 0.0,
+                summary_name: str = "SUMMARY") -> list[str]:
+    """The body of a generated table module: ``head`` (a layout of its own), the description
+    (``TABLE_*``), the summary series and, for a table with a history, the history.
+
+    Parameters
+    ----------
+    t : Tables
+        The built or stored table.
+    spec : TableSpec
+        Its description.
+    head : sequence of str
+        Lines written first.
+    summary_note : str
+        The comment above the summary.
+    history_note : sequence of str
+        The comment lines above the history.
+    quantum : float
+        The history's rounding level (``render_history``).
+    summary_name : str
+        The name the summary is assigned to.
+
+    Returns
+    -------
+    list of str
+    """
+    lines = [*head, *spec_assignments(spec), "", f"#: {summary_note}",
+             *render_summary(summary_name, t["summary"], spec.fields, spec.digits)]
+    if "history" in t:
+        lines += ["", *history_note,
+                  *render_history(t["history"], t.get("weights", {}), quantum)]
+    return lines
+
+
 def stored_tables(ns: Mapping[str, Any], summary_name: str = "SUMMARY") -> Tables:
     """A committed table module's numbers as ``Tables`` (history matrices as their strings), for
     :func:`compare` and for re-rendering with the committed numbers.
@@ -372,7 +408,8 @@ def compare(stored: Tables, fresh: Tables, history_floor: float = 0.0,
                 continue
             err = coefficient_difference(c_new, c_old)
             if not err <= rtol:
-                bad.append(f"summary {k} lambda piece {p}: relative difference {err:.2e} > {rtol:g}")
+                bad.append(f"summary {k} lambda piece {p}: relative difference {err:.2e} > "
+                           f"{rtol:g}")
     for key, entries in fresh.get("history", {}).items():
         new, old = _matrices(entries), _matrices(stored.get("history", {}).get(key, []))
         if len(new) != len(old):

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: d9b286ffd6b3dad2
+ * Inputs hash: 65bd475a2b105e72
  * SymPy version: 1.14.0
  */
 #ifndef ZENER_SYM_H

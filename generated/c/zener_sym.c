@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 65bd475a2b105e72
+ * Inputs hash: 6d6f5e24c4f5e673
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -26843,6 +26843,44 @@ static void zs__cheb_T(double x, int deg, int recurrence, double *T)
         T[j] = t4 * T[j - 4] - T[j - 8];
 }
 
+/* every field's Chebyshev sum of one lambda piece, the N fields side by side (the block cf
+   is [degree][field], zero-padded; T[0] = 1): for a history in order of degree, as Python's
+   series sum (numerics.cheb_table), so a time at a piece boundary falls in the same piece on
+   both sides; for a summary alone the odd and even degrees apart (half the chain of dependent
+   additions). A constant N, unrolled: the accumulators stay in registers */
+#define ZS__SERIES_SUM(name, N)                                                            \
+    static void name(const double *cf, const double *T, int deg, int history, double *v) \
+    {                                                                                    \
+        double a[N], b[N];                                                               \
+        int j, f;                                                                        \
+        ZS__UNROLL for (f = 0; f < (N); f++) {                                           \
+            a[f] = cf[f];                                                                \
+            b[f] = 0.0;                                                                  \
+        }                                                                                \
+        if (history) {                                                                   \
+            for (j = 1; j < deg; j++) {                                                  \
+                const double *r = cf + j * (N), tj = T[j];                               \
+                ZS__UNROLL for (f = 0; f < (N); f++) a[f] += tj * r[f];                  \
+            }                                                                            \
+            ZS__UNROLL for (f = 0; f < (N); f++) v[f] = a[f];                            \
+            return;                                                                      \
+        }                                                                                \
+        for (j = 1; j + 1 < deg; j += 2) {                                               \
+            const double *r = cf + j * (N), ta = T[j], tb = T[j + 1];                    \
+            ZS__UNROLL for (f = 0; f < (N); f++) {                                       \
+                a[f] += ta * r[f];                                                       \
+                b[f] += tb * r[(N) + f];                                                 \
+            }                                                                            \
+        }                                                                                \
+        if (j < deg) {                                                                   \
+            const double *r = cf + j * (N), ta = T[j];                                   \
+            ZS__UNROLL for (f = 0; f < (N); f++) a[f] += ta * r[f];                      \
+        }                                                                                \
+        ZS__UNROLL for (f = 0; f < (N); f++) v[f] = a[f] + b[f];                         \
+    }
+ZS__SERIES_SUM(zs__sum_exact, ZS__NSUM)
+ZS__SERIES_SUM(zs__sum_force, ZS__NFSUM)
+
 /* the summary fields of one lambda (exact.table._core) */
 typedef struct {
     int ip;            /* lambda piece */
@@ -26879,62 +26917,7 @@ static void zs__core(const zs__exact_table *t, double lam, int history, zs__core
        and exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
        tau_w0, tau_d) falls in the same piece on both sides */
     zs__cheb_T(x, deg, history, T);
-    {  /* every field's sum in order of degree, the fields side by side (the block is
-           [degree][field], zero-padded) */
-        /* one named accumulator a field (an array would be kept in memory, every addition
-           then waiting on a store); T[0] = 1 */
-        const double *cf = t->sum[i];
-        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5];
-        if (history) { /* in order of degree, as Python */
-            for (j = 1; j < deg; j++) {
-                const double *r = cf + j * ZS__NSUM, tj = T[j];
-                a0 += tj * r[0];
-                a1 += tj * r[1];
-                a2 += tj * r[2];
-                a3 += tj * r[3];
-                a4 += tj * r[4];
-                a5 += tj * r[5];
-            }
-            c->v[0] = a0;
-            c->v[1] = a1;
-            c->v[2] = a2;
-            c->v[3] = a3;
-            c->v[4] = a4;
-            c->v[5] = a5;
-        } else { /* odd and even degrees apart: half the chain of dependent additions */
-            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0;
-            for (j = 1; j + 1 < deg; j += 2) {
-                const double *r = cf + j * ZS__NSUM, ta = T[j], tb = T[j + 1];
-                a0 += ta * r[0];
-                b0 += tb * r[ZS__NSUM + 0];
-                a1 += ta * r[1];
-                b1 += tb * r[ZS__NSUM + 1];
-                a2 += ta * r[2];
-                b2 += tb * r[ZS__NSUM + 2];
-                a3 += ta * r[3];
-                b3 += tb * r[ZS__NSUM + 3];
-                a4 += ta * r[4];
-                b4 += tb * r[ZS__NSUM + 4];
-                a5 += ta * r[5];
-                b5 += tb * r[ZS__NSUM + 5];
-            }
-            if (j < deg) {
-                const double *r = cf + j * ZS__NSUM, ta = T[j];
-                a0 += ta * r[0];
-                a1 += ta * r[1];
-                a2 += ta * r[2];
-                a3 += ta * r[3];
-                a4 += ta * r[4];
-                a5 += ta * r[5];
-            }
-            c->v[0] = a0 + b0;
-            c->v[1] = a1 + b1;
-            c->v[2] = a2 + b2;
-            c->v[3] = a3 + b3;
-            c->v[4] = a4 + b4;
-            c->v[5] = a5 + b5;
-        }
-    }
+    zs__sum_exact(t->sum[i], T, deg, history, c->v);
     c->ip = i;
     c->x = x;
     c->tau_d = exp(c->v[2]);
@@ -26963,7 +26946,7 @@ static const zs__force_table *zs__force_table_of(int contact_end)
 static void zs__force_core(const zs__force_table *t, double lam, int history,
                            double v[ZS__NFSUM], double *e, double *xi, int *ip, double *xl)
 {
-    int i, j, deg = 0;
+    int i, deg = 0;
     double g, x, T[ZS__MAX_FSUM];
     i = 0; /* searchsorted(edges, lam, 'right') - 1, clipped (lam >= edges[0]) */
     while (i < t->n_lam - 1 && t->edges[i + 1] <= lam)
@@ -26976,74 +26959,7 @@ static void zs__force_core(const zs__force_table *t, double lam, int history,
         x = 1.0;
     deg = t->sum_len[i];
     zs__cheb_T(x, deg, history, T);
-    {  /* every field's sum in order of degree, the fields side by side (the block is
-           [degree][field], zero-padded) */
-        /* one named accumulator a field (an array would be kept in memory, every addition
-           then waiting on a store); T[0] = 1 */
-        const double *cf = t->sum[i];
-        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5], a6 = cf[6], a7 = cf[7];
-        if (history) { /* in order of degree, as Python */
-            for (j = 1; j < deg; j++) {
-                const double *r = cf + j * ZS__NFSUM, tj = T[j];
-                a0 += tj * r[0];
-                a1 += tj * r[1];
-                a2 += tj * r[2];
-                a3 += tj * r[3];
-                a4 += tj * r[4];
-                a5 += tj * r[5];
-                a6 += tj * r[6];
-                a7 += tj * r[7];
-            }
-            v[0] = a0;
-            v[1] = a1;
-            v[2] = a2;
-            v[3] = a3;
-            v[4] = a4;
-            v[5] = a5;
-            v[6] = a6;
-            v[7] = a7;
-        } else { /* odd and even degrees apart: half the chain of dependent additions */
-            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0, b6 = 0.0, b7 = 0.0;
-            for (j = 1; j + 1 < deg; j += 2) {
-                const double *r = cf + j * ZS__NFSUM, ta = T[j], tb = T[j + 1];
-                a0 += ta * r[0];
-                b0 += tb * r[ZS__NFSUM + 0];
-                a1 += ta * r[1];
-                b1 += tb * r[ZS__NFSUM + 1];
-                a2 += ta * r[2];
-                b2 += tb * r[ZS__NFSUM + 2];
-                a3 += ta * r[3];
-                b3 += tb * r[ZS__NFSUM + 3];
-                a4 += ta * r[4];
-                b4 += tb * r[ZS__NFSUM + 4];
-                a5 += ta * r[5];
-                b5 += tb * r[ZS__NFSUM + 5];
-                a6 += ta * r[6];
-                b6 += tb * r[ZS__NFSUM + 6];
-                a7 += ta * r[7];
-                b7 += tb * r[ZS__NFSUM + 7];
-            }
-            if (j < deg) {
-                const double *r = cf + j * ZS__NFSUM, ta = T[j];
-                a0 += ta * r[0];
-                a1 += ta * r[1];
-                a2 += ta * r[2];
-                a3 += ta * r[3];
-                a4 += ta * r[4];
-                a5 += ta * r[5];
-                a6 += ta * r[6];
-                a7 += ta * r[7];
-            }
-            v[0] = a0 + b0;
-            v[1] = a1 + b1;
-            v[2] = a2 + b2;
-            v[3] = a3 + b3;
-            v[4] = a4 + b4;
-            v[5] = a5 + b5;
-            v[6] = a6 + b6;
-            v[7] = a7 + b7;
-        }
-    }
+    zs__sum_force(t->sum[i], T, deg, history, v);
     *xi = lam * v[4];
     *e = *xi < 0.5 ? sqrt(1.0 - *xi > 0.0 ? 1.0 - *xi : 0.0) : exp(v[3]);
     *ip = i;

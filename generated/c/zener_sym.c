@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 6d6f5e24c4f5e673
+ * Inputs hash: 3a6ada50a8b8449c
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -68,6 +68,12 @@ typedef double zs__v;
 #else
 #define ZS__UNROLL
 #endif
+/* a function kept out of its callers (where the compiler can say so) */
+#if defined(__GNUC__)
+#define ZS__NOINLINE __attribute__((noinline))
+#else
+#define ZS__NOINLINE
+#endif
 /* C99's restrict (the block buffers of zs_history alias nothing), __restrict in C++ */
 #if defined(__cplusplus)
 #define ZS__RESTRICT __restrict
@@ -98,6 +104,17 @@ typedef struct {
     unsigned char bcols[(ZS__MAX_ROWS + 3) / 4];
 } zs__mat;
 
+/* the lambda pieces of a table, from the description written into it (TABLE_PIECES,
+   numerics.cheb_table.TableSpec): per piece its kind of Chebyshev variable g (ZS__LAM: lambda,
+   ZS__LOG: ln lambda, ZS__SQRT_LAM: sqrt(lambda), ZS__SQRT: sqrt(lambda - start)) and g's
+   ends; zs__piece_of, zs__variable and zs__local_x evaluate them for every table */
+enum { ZS__LAM = 0, ZS__LOG = 1, ZS__SQRT_LAM = 2, ZS__SQRT = 3 };
+typedef struct {
+    int n;
+    const double *edges, *ga, *gb;
+    const int *kind;
+} zs__pieces;
+
 /* one time piece of the history: per lambda piece and sub-piece a matrix */
 typedef struct {
     int n_sub;
@@ -107,9 +124,7 @@ typedef struct {
 /* the summary of a force-free-end table (generated/exact_force_table.py): Chebyshev variable
    sqrt(lambda) below LOG_FROM, ln lambda above */
 typedef struct {
-    int n_lam;
-    const double *edges, *ga, *gb;
-    const int *log_piece;
+    zs__pieces pieces;
     double lam_min, lam_max;
     const double *const *sum;   /* per piece [degree][ZS__NFSUM field] */
     const int *sum_len;
@@ -118,9 +133,9 @@ typedef struct {
 
 /* an exact table (the layout of generated/exact_table.py) */
 typedef struct {
-    int n_lam, n_hist;          /* lambda pieces; those with a history table */
-    const double *edges, *ga, *gb, *xk, *xo; /* x = (2 g - ga - gb) / (gb - ga) ~ g xk - xo */
-    const int *log_piece;       /* Chebyshev variable ln lambda (1) or lambda (0) */
+    zs__pieces pieces;          /* lambda pieces (ln lambda or lambda) */
+    int n_hist;                 /* the pieces with a history table */
+    const double *xk, *xo;      /* x = (2 g - ga - gb) / (gb - ga) ~ g xk - xo */
     double lam_min, lam_max, hist_max;
     double log_from, c_stretch, c_end, s_orbit, s_transient;
     const double *const *sum;   /* per piece [degree][ZS__NSUM field] */
@@ -141,6 +156,7 @@ static const double zs__delta_gb[9] = {
     1.0, 2.0, 3.5, 5.0, 2.302585092994046, 3.2188758248682006,
     4.382026634673881, 5.703782474656201, 6.907755278982137
 };
+static const int zs__delta_kind[9] = {0, 0, 0, 0, 1, 1, 1, 1, 1};
 static const double zs__delta_xk[9] = {
     2.0, 2.0, 1.3333333333333333, 1.3333333333333333, 2.8853900817779254, 2.182713335874584,
     1.7194674870527975, 1.5131387654975315, 1.6611670901650748
@@ -18071,9 +18087,8 @@ static const zs__mat zs__delta_B[108] = {
     {4, 2, 3, zs__delta_B_8_10, {2}},
     {4, 2, 3, zs__delta_B_8_11, {2}}
 };
-static const int zs__delta_log[9] = {0, 0, 0, 0, 1, 1, 1, 1, 1};
 static const zs__exact_table zs__tab_delta = {
-    9, 9, zs__delta_edges, zs__delta_ga, zs__delta_gb, zs__delta_xk, zs__delta_xo, zs__delta_log,
+    {9, zs__delta_edges, zs__delta_ga, zs__delta_gb, zs__delta_kind}, 9, zs__delta_xk, zs__delta_xo,
     0.0, 1000.0, 1000.0,
     5.0, 1.0, 0.5, 0.3, 10.0,
     zs__delta_sum, zs__delta_sum_len,
@@ -18093,6 +18108,7 @@ static const double zs__fforce_gb[8] = {
     0.5, 1.0, 1.4142135623730951, 1.8708286933869707, 2.23606797749979, 3.2188758248682006,
     5.0106352940962555, 6.907755278982137
 };
+static const int zs__fforce_kind[8] = {2, 2, 2, 2, 2, 1, 1, 1};
 static const double zs__fforce_s0[176] = {
     1.03165830348801, 1.57224506793241, 1.14303575800009, -0.153514251334034, 2.94748131875298, 0.056849901455363, 0.402126340771798, 1.18721248143928,
     -0.0799828069591075, -0.0481591820717671, -0.0338727227792056, -0.202244017938183, -0.65286878900936, -0.0975174166613733, -0.186585246542438, 0.0251629041567508,
@@ -26426,13 +26442,22 @@ static const zs__mat zs__fforce_R[96] = {
     {8, 11, 5, zs__fforce_R_7_10, {11, 7}},
     {8, 11, 5, zs__fforce_R_7_11, {11, 7}}
 };
-static const int zs__fforce_log[8] = {0, 0, 0, 0, 0, 1, 1, 1};
 static const zs__force_table zs__ftab_force = {
-    8, zs__fforce_edges, zs__fforce_ga, zs__fforce_gb, zs__fforce_log, 0.0, 1000.0, zs__fforce_sum, zs__fforce_sum_len,
+    {8, zs__fforce_edges, zs__fforce_ga, zs__fforce_gb, zs__fforce_kind}, 0.0, 1000.0, zs__fforce_sum, zs__fforce_sum_len,
     {{12, zs__fforce_C}, {12, zs__fforce_R}}
 };
 
 /* ---- ham1 summary table ---- */
+static const double zs__h1_edges[4] = {
+    0.0, 1.0, 2.030453280660366, 2.442438929984615
+};
+static const double zs__h1_ga[3] = {
+    0.0, 1.0, 0.0
+};
+static const double zs__h1_gb[3] = {
+    1.0, 2.030453280660366, 0.6418610825749206
+};
+static const int zs__h1_kind[3] = {0, 0, 3};
 static const double zs__h1_0_delta_m[28] = {
     0.86586447359568, -0.2024707519518124, 0.028599624733729977, -0.004301587074908495, 0.0006732375224907331, -0.0001086675400319842,
     1.7993144870276367e-05, -3.0439658458905616e-06, 5.243763051381023e-07, -9.172274791774404e-08, 1.625127449451924e-08, -2.910626129004612e-09,
@@ -26563,16 +26588,7 @@ static const double zs__h1_2_int_F2[32] = {
     -4.141652298894627e-17, 3.469446951953614e-17, -1.0516761073109393e-16, 1.3183898417423734e-16, 3.0292608699244994e-16, 1.1796119636642288e-16,
     1.448494102440634e-16, 7.008282842946301e-16
 };
-static const double zs__h1_start[3] = {
-    0.0, 1.0, 2.030453280660366
-};
-static const double zs__h1_ga[3] = {
-    0.0, 1.0, 0.0
-};
-static const double zs__h1_gb[3] = {
-    1.0, 2.030453280660366, 0.6418610825749206
-};
-static const int zs__h1_sqrt[3] = {0, 0, 1};
+static const zs__pieces zs__h1_pieces = {3, zs__h1_edges, zs__h1_ga, zs__h1_gb, zs__h1_kind};
 static const double *const zs__h1_coef[18] = {zs__h1_0_delta_m, zs__h1_0_tau_dc, zs__h1_0_log_tau_d, zs__h1_0_log_e, zs__h1_0_impulse, zs__h1_0_int_F2, zs__h1_1_delta_m, zs__h1_1_tau_dc, zs__h1_1_log_tau_d, zs__h1_1_log_e, zs__h1_1_impulse, zs__h1_1_int_F2, zs__h1_2_delta_m, zs__h1_2_tau_dc, zs__h1_2_log_tau_d, zs__h1_2_log_e, zs__h1_2_impulse, zs__h1_2_int_F2};
 static const int zs__h1_len[18] = {28, 28, 27, 21, 28, 28, 28, 28, 25, 24, 28, 28, 32, 35, 32, 32, 32, 32};
 #define ZS__H1_PIECES 3
@@ -26881,6 +26897,40 @@ static void zs__cheb_T(double x, int deg, int recurrence, double *T)
 ZS__SERIES_SUM(zs__sum_exact, ZS__NSUM)
 ZS__SERIES_SUM(zs__sum_force, ZS__NFSUM)
 
+/* the piece of lambda among the first last + 1 (searchsorted(edges, lam, 'right') - 1,
+   clipped; lam >= edges[0]): the edges above the first that lam reached, counted without a
+   branch */
+static int zs__piece_of(const zs__pieces *P, double lam, int last)
+{
+    int i = 0, j;
+    for (j = 1; j <= last; j++)
+        i += P->edges[j] <= lam;
+    return i;
+}
+
+/* the Chebyshev variable g of piece i at lambda (numerics.cheb_table.Pieces.variable) */
+static double zs__variable(const zs__pieces *P, int i, double lam)
+{
+    double d = lam - P->edges[i];
+    switch (P->kind[i]) {
+    case ZS__LOG:
+        return log(lam);
+    case ZS__SQRT_LAM:
+        return sqrt(lam);
+    case ZS__SQRT:
+        return sqrt(d > 0.0 ? d : 0.0);
+    default:
+        return lam;
+    }
+}
+
+/* x in [-1, 1] of the variable g on piece i, Python's division (Pieces.locate) */
+static double zs__local_x(const zs__pieces *P, int i, double g)
+{
+    double x = (2.0 * g - P->ga[i] - P->gb[i]) / (P->gb[i] - P->ga[i]);
+    return x < -1.0 ? -1.0 : (x > 1.0 ? 1.0 : x);
+}
+
 /* the summary fields of one lambda (exact.table._core) */
 typedef struct {
     int ip;            /* lambda piece */
@@ -26889,29 +26939,23 @@ typedef struct {
     double tau_d, e, tau_w0;
 } zs__core_t;
 
-static void zs__core(const zs__exact_table *t, double lam, int history, zs__core_t *c)
+/* not inlined into zs_history (ZS__NOINLINE): when gcc inlined it there, the per-point
+   passes of the history took 1.7 ns a point more at -O3 -march=native (12.2 -> 13.9) */
+ZS__NOINLINE static void zs__core(const zs__exact_table *t, double lam, int history,
+                                  zs__core_t *c)
 {
-    int last = (history ? t->n_hist : t->n_lam) - 1, i, j, deg = 0;
-    double g, a, b, x, T[ZS__MAX_SUM], xi, e_direct;
-    /* piece: searchsorted(edges, lam, 'right') - 1, clipped to [0, last] (lam >= edges[0]):
-       the edges above the first that lam reached, counted without a branch */
-    /* ln lambda first, whichever the piece: the search then runs beside the logarithm
-       instead of before it (lambda > 0 keeps a lambda = 0 from raising FE_DIVBYZERO) */
-    g = log(lam > 0.0 ? lam : 1.0);
-    i = 0;
-    for (j = 1; j <= last; j++)
-        i += t->edges[j] <= lam;
-    if (!t->log_piece[i])
-        g = lam;
-    a = t->ga[i];
-    b = t->gb[i];
+    int last = (history ? t->n_hist : t->pieces.n) - 1, i, deg = 0;
+    double g, x, T[ZS__MAX_SUM], xi, e_direct;
+    i = zs__piece_of(&t->pieces, lam, last);
+    g = zs__variable(&t->pieces, i, lam);
     /* a history: Python's division (the same x, the same piece ends); a summary: the division
        folded into two constants (within an ulp or two of x, off the summary's critical path) */
-    x = history ? (2.0 * g - a - b) / (b - a) : g * t->xk[i] - t->xo[i];
-    if (x < -1.0)
-        x = -1.0;
-    if (x > 1.0)
-        x = 1.0;
+    if (history)
+        x = zs__local_x(&t->pieces, i, g);
+    else {
+        x = g * t->xk[i] - t->xo[i];
+        x = x < -1.0 ? -1.0 : (x > 1.0 ? 1.0 : x);
+    }
     deg = t->sum_len[i];
     /* for a history T_k(x) by the recurrence and each sum in order of k, as numpy's chebvander
        and exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
@@ -26948,15 +26992,9 @@ static void zs__force_core(const zs__force_table *t, double lam, int history,
 {
     int i, deg = 0;
     double g, x, T[ZS__MAX_FSUM];
-    i = 0; /* searchsorted(edges, lam, 'right') - 1, clipped (lam >= edges[0]) */
-    while (i < t->n_lam - 1 && t->edges[i + 1] <= lam)
-        i++;
-    g = t->log_piece[i] ? log(lam) : sqrt(lam);
-    x = (2.0 * g - t->ga[i] - t->gb[i]) / (t->gb[i] - t->ga[i]);
-    if (x < -1.0)
-        x = -1.0;
-    if (x > 1.0)
-        x = 1.0;
+    i = zs__piece_of(&t->pieces, lam, t->pieces.n - 1);
+    g = zs__variable(&t->pieces, i, lam);
+    x = zs__local_x(&t->pieces, i, g);
     deg = t->sum_len[i];
     zs__cheb_T(x, deg, history, T);
     zs__sum_force(t->sum[i], T, deg, history, v);
@@ -27137,7 +27175,7 @@ static int zs__force_history(const zs__force_table *t, double lam, size_t n, con
     zs__piece_t P[2];
     size_t i;
     zs__force_core(t, lam, 1, v, &e, &xi, &ip, &xl);
-    lg = t->log_piece[ip];
+    lg = t->pieces.kind[ip] == ZS__LOG;
     tau_dc = v[1];
     tau_d = exp(v[2]);
     if (lg) {
@@ -27231,7 +27269,7 @@ static void zs__history_setup(const zs__exact_table *t, double lam, zs__hist_t *
     H->t = t;
     zs__core(t, lam, 1, &H->c);
     tau_dc = H->c.v[1];
-    log_piece = t->log_piece[H->c.ip];
+    log_piece = t->pieces.kind[H->c.ip] == ZS__LOG;
     H->tau_s = log_piece ? tau_dc + lam * (t->s_orbit + t->s_transient * pow(lam, -5.0 / 3.0))
                          : H->c.tau_w0;
     /* T_k(x_lambda) for the lambda contraction */
@@ -27579,16 +27617,9 @@ static void zs__h1_eval(double lam, double v[6])
 {
     int i, j, f, deg = 0;
     double g, x, acx, T[ZS__MAX_H1];
-    i = 0;
-    for (j = 1; j < ZS__H1_PIECES; j++)
-        if (zs__h1_start[j] <= lam)
-            i = j;
-    g = zs__h1_sqrt[i] ? sqrt(lam - zs__h1_start[i] > 0.0 ? lam - zs__h1_start[i] : 0.0) : lam;
-    x = (2.0 * g - zs__h1_ga[i] - zs__h1_gb[i]) / (zs__h1_gb[i] - zs__h1_ga[i]);
-    if (x < -1.0)
-        x = -1.0;
-    if (x > 1.0)
-        x = 1.0;
+    i = zs__piece_of(&zs__h1_pieces, lam, zs__h1_pieces.n - 1);
+    g = zs__variable(&zs__h1_pieces, i, lam);
+    x = zs__local_x(&zs__h1_pieces, i, g);
     for (f = 0; f < 6; f++)
         if (zs__h1_len[i * 6 + f] > deg)
             deg = zs__h1_len[i * 6 + f];

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 6d6f5e24c4f5e673
+ * Inputs hash: 3a6ada50a8b8449c
  * SymPy version: 1.14.0
  */
 #ifndef ZENER_SYM_H

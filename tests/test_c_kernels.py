@@ -385,7 +385,7 @@ def test_exact_history_pointwise_relative(lib):
 
 def test_force_end_summary_matches_python(lib):
     """ZS_FORCE summaries against the force-free end's tables in Python (same coefficients), and
-    the inverse at that end against zs.lam_for. The tables are part of the tree: if they cannot
+    the inverse at that end against zs.lam_from_summary. The tables are part of the tree: if they cannot
     answer, the test fails (it used to skip)."""
     api = PY["api"]
     for lam in _lams() + [1e-12, 0.25, 0.01]:
@@ -395,8 +395,8 @@ def test_force_end_summary_matches_python(lib):
         for f in FIELDS:
             assert c[f] == pytest.approx(float(getattr(py, f)), rel=1e-14, abs=1e-300), (lam, f)
     for e in (1 - 1e-9, 0.9, 0.5, 0.1, 1e-3):
-        assert lib.zs_lam_for_e(e, 1) == pytest.approx(api.lam_for(e=e, contact_end="force"),
-                                                       rel=1e-12), e
+        assert lib.zs_lam_for_e(e, 1) == pytest.approx(
+            api.lam_from_summary(e=e, contact_end="force"), rel=1e-12), e
 
 
 def _force_piece_times(lam):
@@ -495,12 +495,9 @@ def test_lam_for_e_inverts_python_e(lib):
 
 
 def test_lam_for_e_matches_python_inverse(lib):
-    """Against the package's own inverse (``zs.lam_for``, the exact tables' safeguarded Newton)
-    where this tree has it."""
-    lam_for = getattr(PY["api"], "lam_for", None)
-    if lam_for is None:
-        pytest.skip("zener_sym.api.lam_for is not in this tree (it comes with the inverse's "
-                    "branch); checked against brentq above")
+    """Against the package's own inverse (``zs.lam_from_summary``, the exact tables' safeguarded
+    Newton)."""
+    lam_for = PY["api"].lam_from_summary
     for e in (1 - 1e-9, 0.99, 0.9, 0.7, 0.5, 0.3, 0.1, 0.01, 1e-5):
         assert lib.zs_lam_for_e(e, 0) == pytest.approx(lam_for(e=e), rel=1e-12), e
 

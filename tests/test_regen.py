@@ -104,6 +104,62 @@ def test_ham1_table_check_fails_when_stale(tmp_path, capsys):
     _table_stale("ham1-table", tmp_path, capsys)
 
 
+def test_table_check_compares_the_text_too(tmp_path):
+    """A table's check compares its rendered text, numbers masked: a text-only drift (a stale
+    comment, as generated/exact_table.py once named ``table_build.parse_array`` after the
+    function had moved) fails it; a number moved within the check's tolerance, or a series of
+    another length (trimmed otherwise on another machine), does not."""
+    art = artefacts.get("ham1-table")
+    (rel, text), = _copy(art, tmp_path).items()
+    assert artefacts.check(art, tmp_path) == []
+    drifted = text.replace("#: field -> one tuple of Chebyshev",
+                           "#: field -> one tuple of Legendre")
+    assert drifted != text
+    (tmp_path / rel).write_text(drifted, encoding="utf-8")
+    problems = artefacts.check(art, tmp_path)
+    assert problems[0] == f"{rel}: its text differs from a fresh rendering (numbers masked):"
+    assert "-#: field -> one tuple of Legendre coefficients per lambda piece" in problems
+    # within the tolerance: the last digit of one coefficient, and one trailing coefficient more
+    m = re.search(r"\((-?\d\.\d{16})(\d)(, )", text)
+    end = text.index(",)", m.end())
+    nudged = (text[:m.start(2)] + str((int(m.group(2)) + 1) % 10) + text[m.end(2):end] + ", 0"
+              + text[end:])
+    (tmp_path / rel).write_text(nudged, encoding="utf-8")
+    assert artefacts.check(art, tmp_path) == []
+    assert artefacts.text_skeleton(nudged) == artefacts.text_skeleton(text)
+
+
+def test_regen_keeps_committed_numbers_that_agree(tmp_path, monkeypatch):
+    """``zener-sym regen TABLE`` on a machine whose rebuild differs from the committed numbers
+    by rounding (another processor, another libm) writes the committed file byte for byte; a
+    rebuild beyond the check's tolerance is written as built."""
+    from zener_sym.ham import table_build as hb
+
+    art = artefacts.get("ham1-table")
+    (rel, text), = _copy(art, tmp_path).items()
+    real = hb.build_tables()
+
+    def nudged(by):
+        return {**real, "summary": {k: [c * (1.0 + by) for c in v]
+                                    for k, v in real["summary"].items()}}
+
+    monkeypatch.setattr(hb, "build_tables", lambda: nudged(1e-13))
+    assert artefacts.build(art, tmp_path) == []  # nothing written: the committed bytes stay
+    assert (tmp_path / rel).read_text(encoding="utf-8") == text
+    monkeypatch.setattr(hb, "build_tables", lambda: nudged(1e-9))
+    assert artefacts.build(art, tmp_path) == [tmp_path / rel]
+    assert (tmp_path / rel).read_text(encoding="utf-8") == hb.render(nudged(1e-9))
+    assert artefacts.check(art, tmp_path) == []
+
+
+def test_text_skeleton_masks_numbers_only():
+    sk = artefacts.text_skeleton
+    assert sk("X = (1.5, -2e-07, 3,)\n# scipy 1.17.1, hash 7b76e73fe6") == sk(
+        "X = (2.5,)\n#   scipy 1.16.0, hash 7b76e73fe6")
+    assert sk("X = (1.5,)  # ham.chebyshev") != sk("X = (1.5,)  # numerics.elementary")
+    assert sk("'5 11 1e-3 0'") == sk("'4 2 7 8 9'") and sk("ham1 = 1") != sk("ham2 = 1")
+
+
 @pytest.mark.slow
 def test_exact_force_table_check_fails_when_stale(tmp_path, capsys):
     # the three exact/ham1 tables share one check (artefacts._table); the plate's table is not

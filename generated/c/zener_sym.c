@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 5f1ec4a3654920d2
+ * Inputs hash: de75b9711fbeeaef
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -33,12 +33,52 @@
    build gives the same doubles; written out, -O3's loop vectorizer no longer reshuffles the
    scalar loop (it made the contraction half as slow again), and an AVX build takes four
    doubles at a time */
+/* The vector layer (its one user: zs__block16 and zs__block8, the lambda contraction): a
+   vector zs__v of ZS__VW doubles and its four operations. AVX (4 lanes), SSE2 (2) or its
+   plain-C twin (1): each lane does the same multiply and add in the same order. Measured gain
+   over the twin (gcc 12, the bench driver's 200 x 500 history, 2026-11-27): -O3 15.3 against
+   17.6 ns a point; -O3 -march=native 12.5 against 12.6 and -O2 15.6 against 15.7 (there gcc
+   vectorizes or schedules the twin as well itself). */
 #if defined(__AVX__)
 #include <immintrin.h>
-#define ZS__AVX 1
+typedef __m256d zs__v;
+#define ZS__VW 4
+#define zs__v_set1(x) _mm256_set1_pd(x)
+#define zs__v_mul(c, t) _mm256_mul_pd(_mm256_loadu_pd(c), t)
+#define zs__v_madd(a, c, t) _mm256_add_pd(a, _mm256_mul_pd(_mm256_loadu_pd(c), t))
+#define zs__v_store(o, a) _mm256_storeu_pd(o, a)
 #elif defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
 #include <emmintrin.h>
-#define ZS__SSE2 1
+typedef __m128d zs__v;
+#define ZS__VW 2
+#define zs__v_set1(x) _mm_set1_pd(x)
+#define zs__v_mul(c, t) _mm_mul_pd(_mm_loadu_pd(c), t)
+#define zs__v_madd(a, c, t) _mm_add_pd(a, _mm_mul_pd(_mm_loadu_pd(c), t))
+#define zs__v_store(o, a) _mm_storeu_pd(o, a)
+#else
+typedef double zs__v;
+#define ZS__VW 1
+#define zs__v_set1(x) (x)
+#define zs__v_mul(c, t) ((c)[0] * (t))
+#define zs__v_madd(a, c, t) ((a) + (c)[0] * (t))
+#define zs__v_store(o, a) ((o)[0] = (a))
+#endif
+#if defined(__GNUC__)
+#define ZS__UNROLL _Pragma("GCC unroll 16")
+#else
+#define ZS__UNROLL
+#endif
+/* a function kept out of its callers (where the compiler can say so) */
+#if defined(__GNUC__)
+#define ZS__NOINLINE __attribute__((noinline))
+#else
+#define ZS__NOINLINE
+#endif
+/* C99's restrict (the block buffers of zs_history alias nothing), __restrict in C++ */
+#if defined(__cplusplus)
+#define ZS__RESTRICT __restrict
+#else
+#define ZS__RESTRICT restrict
 #endif
 
 #define ZS__PI 3.14159265358979323846264338328
@@ -64,6 +104,17 @@ typedef struct {
     unsigned char bcols[(ZS__MAX_ROWS + 3) / 4];
 } zs__mat;
 
+/* the lambda pieces of a table, from the description written into it (TABLE_PIECES,
+   numerics.cheb_table.TableSpec): per piece its kind of Chebyshev variable g (ZS__LAM: lambda,
+   ZS__LOG: ln lambda, ZS__SQRT_LAM: sqrt(lambda), ZS__SQRT: sqrt(lambda - start)) and g's
+   ends; zs__piece_of, zs__variable and zs__local_x evaluate them for every table */
+enum { ZS__LAM = 0, ZS__LOG = 1, ZS__SQRT_LAM = 2, ZS__SQRT = 3 };
+typedef struct {
+    int n;
+    const double *edges, *ga, *gb;
+    const int *kind;
+} zs__pieces;
+
 /* one time piece of the history: per lambda piece and sub-piece a matrix */
 typedef struct {
     int n_sub;
@@ -73,9 +124,7 @@ typedef struct {
 /* the summary of a force-free-end table (generated/exact_force_table.py): Chebyshev variable
    sqrt(lambda) below LOG_FROM, ln lambda above */
 typedef struct {
-    int n_lam;
-    const double *edges, *ga, *gb;
-    const int *log_piece;
+    zs__pieces pieces;
     double lam_min, lam_max;
     const double *const *sum;   /* per piece [degree][ZS__NFSUM field] */
     const int *sum_len;
@@ -84,9 +133,9 @@ typedef struct {
 
 /* an exact table (the layout of generated/exact_table.py) */
 typedef struct {
-    int n_lam, n_hist;          /* lambda pieces; those with a history table */
-    const double *edges, *ga, *gb, *xk, *xo; /* x = (2 g - ga - gb) / (gb - ga) ~ g xk - xo */
-    const int *log_piece;       /* Chebyshev variable ln lambda (1) or lambda (0) */
+    zs__pieces pieces;          /* lambda pieces (ln lambda or lambda) */
+    int n_hist;                 /* the pieces with a history table */
+    const double *xk, *xo;      /* x = (2 g - ga - gb) / (gb - ga) ~ g xk - xo */
     double lam_min, lam_max, hist_max;
     double log_from, c_stretch, c_end, s_orbit, s_transient;
     const double *const *sum;   /* per piece [degree][ZS__NSUM field] */
@@ -107,6 +156,7 @@ static const double zs__delta_gb[9] = {
     1.0, 2.0, 3.5, 5.0, 2.302585092994046, 3.2188758248682006,
     4.382026634673881, 5.703782474656201, 6.907755278982137
 };
+static const int zs__delta_kind[9] = {0, 0, 0, 0, 1, 1, 1, 1, 1};
 static const double zs__delta_xk[9] = {
     2.0, 2.0, 1.3333333333333333, 1.3333333333333333, 2.8853900817779254, 2.182713335874584,
     1.7194674870527975, 1.5131387654975315, 1.6611670901650748
@@ -18037,9 +18087,8 @@ static const zs__mat zs__delta_B[108] = {
     {4, 2, 3, zs__delta_B_8_10, {2}},
     {4, 2, 3, zs__delta_B_8_11, {2}}
 };
-static const int zs__delta_log[9] = {0, 0, 0, 0, 1, 1, 1, 1, 1};
 static const zs__exact_table zs__tab_delta = {
-    9, 9, zs__delta_edges, zs__delta_ga, zs__delta_gb, zs__delta_xk, zs__delta_xo, zs__delta_log,
+    {9, zs__delta_edges, zs__delta_ga, zs__delta_gb, zs__delta_kind}, 9, zs__delta_xk, zs__delta_xo,
     0.0, 1000.0, 1000.0,
     5.0, 1.0, 0.5, 0.3, 10.0,
     zs__delta_sum, zs__delta_sum_len,
@@ -18059,6 +18108,7 @@ static const double zs__fforce_gb[8] = {
     0.5, 1.0, 1.4142135623730951, 1.8708286933869707, 2.23606797749979, 3.2188758248682006,
     5.0106352940962555, 6.907755278982137
 };
+static const int zs__fforce_kind[8] = {2, 2, 2, 2, 2, 1, 1, 1};
 static const double zs__fforce_s0[176] = {
     1.03165830348801, 1.57224506793241, 1.14303575800009, -0.153514251334034, 2.94748131875298, 0.056849901455363, 0.402126340771798, 1.18721248143928,
     -0.0799828069591075, -0.0481591820717671, -0.0338727227792056, -0.202244017938183, -0.65286878900936, -0.0975174166613733, -0.186585246542438, 0.0251629041567508,
@@ -26392,13 +26442,22 @@ static const zs__mat zs__fforce_R[96] = {
     {8, 11, 5, zs__fforce_R_7_10, {11, 7}},
     {8, 11, 5, zs__fforce_R_7_11, {11, 7}}
 };
-static const int zs__fforce_log[8] = {0, 0, 0, 0, 0, 1, 1, 1};
 static const zs__force_table zs__ftab_force = {
-    8, zs__fforce_edges, zs__fforce_ga, zs__fforce_gb, zs__fforce_log, 0.0, 1000.0, zs__fforce_sum, zs__fforce_sum_len,
+    {8, zs__fforce_edges, zs__fforce_ga, zs__fforce_gb, zs__fforce_kind}, 0.0, 1000.0, zs__fforce_sum, zs__fforce_sum_len,
     {{12, zs__fforce_C}, {12, zs__fforce_R}}
 };
 
 /* ---- ham1 summary table ---- */
+static const double zs__h1_edges[4] = {
+    0.0, 1.0, 2.030453280660366, 2.442438929984615
+};
+static const double zs__h1_ga[3] = {
+    0.0, 1.0, 0.0
+};
+static const double zs__h1_gb[3] = {
+    1.0, 2.030453280660366, 0.6418610825749206
+};
+static const int zs__h1_kind[3] = {0, 0, 3};
 static const double zs__h1_0_delta_m[28] = {
     0.86586447359568, -0.2024707519518124, 0.028599624733729977, -0.004301587074908495, 0.0006732375224907331, -0.0001086675400319842,
     1.7993144870276367e-05, -3.0439658458905616e-06, 5.243763051381023e-07, -9.172274791774404e-08, 1.625127449451924e-08, -2.910626129004612e-09,
@@ -26529,16 +26588,7 @@ static const double zs__h1_2_int_F2[32] = {
     -4.141652298894627e-17, 3.469446951953614e-17, -1.0516761073109393e-16, 1.3183898417423734e-16, 3.0292608699244994e-16, 1.1796119636642288e-16,
     1.448494102440634e-16, 7.008282842946301e-16
 };
-static const double zs__h1_start[3] = {
-    0.0, 1.0, 2.030453280660366
-};
-static const double zs__h1_ga[3] = {
-    0.0, 1.0, 0.0
-};
-static const double zs__h1_gb[3] = {
-    1.0, 2.030453280660366, 0.6418610825749206
-};
-static const int zs__h1_sqrt[3] = {0, 0, 1};
+static const zs__pieces zs__h1_pieces = {3, zs__h1_edges, zs__h1_ga, zs__h1_gb, zs__h1_kind};
 static const double *const zs__h1_coef[18] = {zs__h1_0_delta_m, zs__h1_0_tau_dc, zs__h1_0_log_tau_d, zs__h1_0_log_e, zs__h1_0_impulse, zs__h1_0_int_F2, zs__h1_1_delta_m, zs__h1_1_tau_dc, zs__h1_1_log_tau_d, zs__h1_1_log_e, zs__h1_1_impulse, zs__h1_1_int_F2, zs__h1_2_delta_m, zs__h1_2_tau_dc, zs__h1_2_log_tau_d, zs__h1_2_log_e, zs__h1_2_impulse, zs__h1_2_int_F2};
 static const int zs__h1_len[18] = {28, 28, 27, 21, 28, 28, 28, 28, 25, 24, 28, 28, 32, 35, 32, 32, 32, 32};
 #define ZS__H1_PIECES 3
@@ -26609,7 +26659,7 @@ static void zs__ham_params(double lam, double *k_out, double *beta_out, double *
     *omega0_out = omega0;
 }
 
-/* sin on the first half wave [0, pi], 0 beyond (ham.chebyshev.half_wave_sin) */
+/* sin on the first half wave [0, pi], 0 beyond (numerics.elementary.half_wave_sin) */
 static double zs__half_wave_sin(double theta)
 {
     return theta < ZS__PI ? sin(theta) : 0.0;
@@ -26811,6 +26861,78 @@ static void zs__cheb_T(double x, int deg, int recurrence, double *T)
         T[j] = t4 * T[j - 4] - T[j - 8];
 }
 
+/* every field's Chebyshev sum of one lambda piece, the N fields side by side (the block cf
+   is [degree][field], zero-padded; T[0] = 1): for a history in order of degree, as Python's
+   series sum (numerics.cheb_table), so a time at a piece boundary falls in the same piece on
+   both sides; for a summary alone the odd and even degrees apart (half the chain of dependent
+   additions). A constant N, unrolled: the accumulators stay in registers */
+#define ZS__SERIES_SUM(name, N)                                                            \
+    static void name(const double *cf, const double *T, int deg, int history, double *v) \
+    {                                                                                    \
+        double a[N], b[N];                                                               \
+        int j, f;                                                                        \
+        ZS__UNROLL for (f = 0; f < (N); f++) {                                           \
+            a[f] = cf[f];                                                                \
+            b[f] = 0.0;                                                                  \
+        }                                                                                \
+        if (history) {                                                                   \
+            for (j = 1; j < deg; j++) {                                                  \
+                const double *r = cf + j * (N), tj = T[j];                               \
+                ZS__UNROLL for (f = 0; f < (N); f++) a[f] += tj * r[f];                  \
+            }                                                                            \
+            ZS__UNROLL for (f = 0; f < (N); f++) v[f] = a[f];                            \
+            return;                                                                      \
+        }                                                                                \
+        for (j = 1; j + 1 < deg; j += 2) {                                               \
+            const double *r = cf + j * (N), ta = T[j], tb = T[j + 1];                    \
+            ZS__UNROLL for (f = 0; f < (N); f++) {                                       \
+                a[f] += ta * r[f];                                                       \
+                b[f] += tb * r[(N) + f];                                                 \
+            }                                                                            \
+        }                                                                                \
+        if (j < deg) {                                                                   \
+            const double *r = cf + j * (N), ta = T[j];                                   \
+            ZS__UNROLL for (f = 0; f < (N); f++) a[f] += ta * r[f];                      \
+        }                                                                                \
+        ZS__UNROLL for (f = 0; f < (N); f++) v[f] = a[f] + b[f];                         \
+    }
+ZS__SERIES_SUM(zs__sum_exact, ZS__NSUM)
+ZS__SERIES_SUM(zs__sum_force, ZS__NFSUM)
+
+/* the piece of lambda among the first last + 1 (searchsorted(edges, lam, 'right') - 1,
+   clipped; lam >= edges[0]): the edges above the first that lam reached, counted without a
+   branch */
+static int zs__piece_of(const zs__pieces *P, double lam, int last)
+{
+    int i = 0, j;
+    for (j = 1; j <= last; j++)
+        i += P->edges[j] <= lam;
+    return i;
+}
+
+/* the Chebyshev variable g of piece i at lambda (numerics.cheb_table.Pieces.variable) */
+static double zs__variable(const zs__pieces *P, int i, double lam)
+{
+    double d = lam - P->edges[i];
+    switch (P->kind[i]) {
+    case ZS__LOG:
+        return log(lam);
+    case ZS__SQRT_LAM:
+        return sqrt(lam);
+    case ZS__SQRT:
+        return sqrt(d > 0.0 ? d : 0.0);
+    default:
+        return lam;
+    }
+}
+
+/* x in [-1, 1] of the variable g on piece i, Python's division (Pieces.locate) */
+static double zs__local_x(const zs__pieces *P, int i, double g)
+{
+    double x = (2.0 * g - P->ga[i] - P->gb[i]) / (P->gb[i] - P->ga[i]);
+    return x < -1.0 ? -1.0 : (x > 1.0 ? 1.0 : x);
+}
+
 /* the summary fields of one lambda (exact.table._core) */
 typedef struct {
     int ip;            /* lambda piece */
@@ -26819,90 +26941,29 @@ typedef struct {
     double tau_d, e, tau_w0;
 } zs__core_t;
 
-static void zs__core(const zs__exact_table *t, double lam, int history, zs__core_t *c)
+/* not inlined into zs_history (ZS__NOINLINE): when gcc inlined it there, the per-point
+   passes of the history took 1.7 ns a point more at -O3 -march=native (12.2 -> 13.9) */
+ZS__NOINLINE static void zs__core(const zs__exact_table *t, double lam, int history,
+                                  zs__core_t *c)
 {
-    int last = (history ? t->n_hist : t->n_lam) - 1, i, j, deg = 0;
-    double g, a, b, x, T[ZS__MAX_SUM], xi, e_direct;
-    /* piece: searchsorted(edges, lam, 'right') - 1, clipped to [0, last] (lam >= edges[0]):
-       the edges above the first that lam reached, counted without a branch */
-    /* ln lambda first, whichever the piece: the search then runs beside the logarithm
-       instead of before it (lambda > 0 keeps a lambda = 0 from raising FE_DIVBYZERO) */
-    g = log(lam > 0.0 ? lam : 1.0);
-    i = 0;
-    for (j = 1; j <= last; j++)
-        i += t->edges[j] <= lam;
-    if (!t->log_piece[i])
-        g = lam;
-    a = t->ga[i];
-    b = t->gb[i];
+    int last = (history ? t->n_hist : t->pieces.n) - 1, i, deg = 0;
+    double g, x, T[ZS__MAX_SUM], xi, e_direct;
+    i = zs__piece_of(&t->pieces, lam, last);
+    g = zs__variable(&t->pieces, i, lam);
     /* a history: Python's division (the same x, the same piece ends); a summary: the division
        folded into two constants (within an ulp or two of x, off the summary's critical path) */
-    x = history ? (2.0 * g - a - b) / (b - a) : g * t->xk[i] - t->xo[i];
-    if (x < -1.0)
-        x = -1.0;
-    if (x > 1.0)
-        x = 1.0;
+    if (history)
+        x = zs__local_x(&t->pieces, i, g);
+    else {
+        x = g * t->xk[i] - t->xo[i];
+        x = x < -1.0 ? -1.0 : (x > 1.0 ? 1.0 : x);
+    }
     deg = t->sum_len[i];
     /* for a history T_k(x) by the recurrence and each sum in order of k, as numpy's chebvander
        and exact.table._core: the same doubles as Python, so a time at a piece boundary (tau_dc,
        tau_w0, tau_d) falls in the same piece on both sides */
     zs__cheb_T(x, deg, history, T);
-    {  /* every field's sum in order of degree, the fields side by side (the block is
-           [degree][field], zero-padded) */
-        /* one named accumulator a field (an array would be kept in memory, every addition
-           then waiting on a store); T[0] = 1 */
-        const double *cf = t->sum[i];
-        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5];
-        if (history) { /* in order of degree, as Python */
-            for (j = 1; j < deg; j++) {
-                const double *r = cf + j * ZS__NSUM, tj = T[j];
-                a0 += tj * r[0];
-                a1 += tj * r[1];
-                a2 += tj * r[2];
-                a3 += tj * r[3];
-                a4 += tj * r[4];
-                a5 += tj * r[5];
-            }
-            c->v[0] = a0;
-            c->v[1] = a1;
-            c->v[2] = a2;
-            c->v[3] = a3;
-            c->v[4] = a4;
-            c->v[5] = a5;
-        } else { /* odd and even degrees apart: half the chain of dependent additions */
-            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0;
-            for (j = 1; j + 1 < deg; j += 2) {
-                const double *r = cf + j * ZS__NSUM, ta = T[j], tb = T[j + 1];
-                a0 += ta * r[0];
-                b0 += tb * r[ZS__NSUM + 0];
-                a1 += ta * r[1];
-                b1 += tb * r[ZS__NSUM + 1];
-                a2 += ta * r[2];
-                b2 += tb * r[ZS__NSUM + 2];
-                a3 += ta * r[3];
-                b3 += tb * r[ZS__NSUM + 3];
-                a4 += ta * r[4];
-                b4 += tb * r[ZS__NSUM + 4];
-                a5 += ta * r[5];
-                b5 += tb * r[ZS__NSUM + 5];
-            }
-            if (j < deg) {
-                const double *r = cf + j * ZS__NSUM, ta = T[j];
-                a0 += ta * r[0];
-                a1 += ta * r[1];
-                a2 += ta * r[2];
-                a3 += ta * r[3];
-                a4 += ta * r[4];
-                a5 += ta * r[5];
-            }
-            c->v[0] = a0 + b0;
-            c->v[1] = a1 + b1;
-            c->v[2] = a2 + b2;
-            c->v[3] = a3 + b3;
-            c->v[4] = a4 + b4;
-            c->v[5] = a5 + b5;
-        }
-    }
+    zs__sum_exact(t->sum[i], T, deg, history, c->v);
     c->ip = i;
     c->x = x;
     c->tau_d = exp(c->v[2]);
@@ -26931,87 +26992,14 @@ static const zs__force_table *zs__force_table_of(int contact_end)
 static void zs__force_core(const zs__force_table *t, double lam, int history,
                            double v[ZS__NFSUM], double *e, double *xi, int *ip, double *xl)
 {
-    int i, j, deg = 0;
+    int i, deg = 0;
     double g, x, T[ZS__MAX_FSUM];
-    i = 0; /* searchsorted(edges, lam, 'right') - 1, clipped (lam >= edges[0]) */
-    while (i < t->n_lam - 1 && t->edges[i + 1] <= lam)
-        i++;
-    g = t->log_piece[i] ? log(lam) : sqrt(lam);
-    x = (2.0 * g - t->ga[i] - t->gb[i]) / (t->gb[i] - t->ga[i]);
-    if (x < -1.0)
-        x = -1.0;
-    if (x > 1.0)
-        x = 1.0;
+    i = zs__piece_of(&t->pieces, lam, t->pieces.n - 1);
+    g = zs__variable(&t->pieces, i, lam);
+    x = zs__local_x(&t->pieces, i, g);
     deg = t->sum_len[i];
     zs__cheb_T(x, deg, history, T);
-    {  /* every field's sum in order of degree, the fields side by side (the block is
-           [degree][field], zero-padded) */
-        /* one named accumulator a field (an array would be kept in memory, every addition
-           then waiting on a store); T[0] = 1 */
-        const double *cf = t->sum[i];
-        double a0 = cf[0], a1 = cf[1], a2 = cf[2], a3 = cf[3], a4 = cf[4], a5 = cf[5], a6 = cf[6], a7 = cf[7];
-        if (history) { /* in order of degree, as Python */
-            for (j = 1; j < deg; j++) {
-                const double *r = cf + j * ZS__NFSUM, tj = T[j];
-                a0 += tj * r[0];
-                a1 += tj * r[1];
-                a2 += tj * r[2];
-                a3 += tj * r[3];
-                a4 += tj * r[4];
-                a5 += tj * r[5];
-                a6 += tj * r[6];
-                a7 += tj * r[7];
-            }
-            v[0] = a0;
-            v[1] = a1;
-            v[2] = a2;
-            v[3] = a3;
-            v[4] = a4;
-            v[5] = a5;
-            v[6] = a6;
-            v[7] = a7;
-        } else { /* odd and even degrees apart: half the chain of dependent additions */
-            double b0 = 0.0, b1 = 0.0, b2 = 0.0, b3 = 0.0, b4 = 0.0, b5 = 0.0, b6 = 0.0, b7 = 0.0;
-            for (j = 1; j + 1 < deg; j += 2) {
-                const double *r = cf + j * ZS__NFSUM, ta = T[j], tb = T[j + 1];
-                a0 += ta * r[0];
-                b0 += tb * r[ZS__NFSUM + 0];
-                a1 += ta * r[1];
-                b1 += tb * r[ZS__NFSUM + 1];
-                a2 += ta * r[2];
-                b2 += tb * r[ZS__NFSUM + 2];
-                a3 += ta * r[3];
-                b3 += tb * r[ZS__NFSUM + 3];
-                a4 += ta * r[4];
-                b4 += tb * r[ZS__NFSUM + 4];
-                a5 += ta * r[5];
-                b5 += tb * r[ZS__NFSUM + 5];
-                a6 += ta * r[6];
-                b6 += tb * r[ZS__NFSUM + 6];
-                a7 += ta * r[7];
-                b7 += tb * r[ZS__NFSUM + 7];
-            }
-            if (j < deg) {
-                const double *r = cf + j * ZS__NFSUM, ta = T[j];
-                a0 += ta * r[0];
-                a1 += ta * r[1];
-                a2 += ta * r[2];
-                a3 += ta * r[3];
-                a4 += ta * r[4];
-                a5 += ta * r[5];
-                a6 += ta * r[6];
-                a7 += ta * r[7];
-            }
-            v[0] = a0 + b0;
-            v[1] = a1 + b1;
-            v[2] = a2 + b2;
-            v[3] = a3 + b3;
-            v[4] = a4 + b4;
-            v[5] = a5 + b5;
-            v[6] = a6 + b6;
-            v[7] = a7 + b7;
-        }
-    }
+    zs__sum_force(t->sum[i], T, deg, history, v);
     *xi = lam * v[4];
     *e = *xi < 0.5 ? sqrt(1.0 - *xi > 0.0 ? 1.0 - *xi : 0.0) : exp(v[3]);
     *ip = i;
@@ -27101,6 +27089,27 @@ typedef struct {
     double m[ZS__MAX_SUB][ZS__MAX_ROWS][2];
 } zs__piece_t;
 
+/* o[i] = sum_k c[k w + i] Tl[k] for the 16 (zs__block16) or 8 (zs__block8) doubles i of a
+   block and k < nc, each sum in the order of k: every lane of the vector layer does what its
+   plain-C twin does, so each build gives the same doubles. The lane loops have a constant
+   count and are unrolled (ZS__UNROLL), so the accumulators stay in registers at -O2 too. */
+#define ZS__VBLOCK(name, L)                                                                   \
+    static void name(const double *c, size_t w, const double *Tl, int nc, double *o)       \
+    {                                                                                      \
+        zs__v a[(L) / ZS__VW], t = zs__v_set1(Tl[0]);                                      \
+        int i, k;                                                                          \
+        ZS__UNROLL for (i = 0; i < (L) / ZS__VW; i++) a[i] = zs__v_mul(c + i * ZS__VW, t); \
+        for (k = 1; k < nc; k++) {                                                         \
+            t = zs__v_set1(Tl[k]);                                                         \
+            c += w;                                                                        \
+            ZS__UNROLL for (i = 0; i < (L) / ZS__VW; i++)                                  \
+                a[i] = zs__v_madd(a[i], c + i * ZS__VW, t);                                \
+        }                                                                                  \
+        ZS__UNROLL for (i = 0; i < (L) / ZS__VW; i++) zs__v_store(o + i * ZS__VW, a[i]);   \
+    }
+ZS__VBLOCK(zs__block16, 16)
+ZS__VBLOCK(zs__block8, 8)
+
 static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl, zs__piece_t *P)
 {
     const zs__mat *m = tp->m + ip * tp->n_sub + sub;
@@ -27117,153 +27126,12 @@ static void zs__contract(const zs__tpiece *tp, int ip, int sub, const double *Tl
        multiple of four). A block's sum stops at its last nonzero degree (bcols): the terms
        left out are exact zeros, so the sums are unchanged */
     for (j = 0; j + 16 <= 2 * n; j += 16) {
-        const double *c = m->c + j;
         const int nc = m->bcols[j / 8] > m->bcols[j / 8 + 1] ? m->bcols[j / 8]
                                                              : m->bcols[j / 8 + 1];
-#if defined(ZS__AVX)
-        __m256d t = _mm256_set1_pd(Tl[0]);
-        __m256d a0 = _mm256_mul_pd(_mm256_loadu_pd(c), t);
-        __m256d a1 = _mm256_mul_pd(_mm256_loadu_pd(c + 4), t);
-        __m256d a2 = _mm256_mul_pd(_mm256_loadu_pd(c + 8), t);
-        __m256d a3 = _mm256_mul_pd(_mm256_loadu_pd(c + 12), t);
-        for (k = 1; k < nc; k++) {
-            t = _mm256_set1_pd(Tl[k]);
-            c += w;
-            a0 = _mm256_add_pd(a0, _mm256_mul_pd(_mm256_loadu_pd(c), t));
-            a1 = _mm256_add_pd(a1, _mm256_mul_pd(_mm256_loadu_pd(c + 4), t));
-            a2 = _mm256_add_pd(a2, _mm256_mul_pd(_mm256_loadu_pd(c + 8), t));
-            a3 = _mm256_add_pd(a3, _mm256_mul_pd(_mm256_loadu_pd(c + 12), t));
-        }
-        _mm256_storeu_pd(o + j, a0);
-        _mm256_storeu_pd(o + j + 4, a1);
-        _mm256_storeu_pd(o + j + 8, a2);
-        _mm256_storeu_pd(o + j + 12, a3);
-#elif defined(ZS__SSE2)
-        __m128d t = _mm_set1_pd(Tl[0]);
-        __m128d a0 = _mm_mul_pd(_mm_loadu_pd(c), t), a1 = _mm_mul_pd(_mm_loadu_pd(c + 2), t);
-        __m128d a2 = _mm_mul_pd(_mm_loadu_pd(c + 4), t), a3 = _mm_mul_pd(_mm_loadu_pd(c + 6), t);
-        __m128d a4 = _mm_mul_pd(_mm_loadu_pd(c + 8), t), a5 = _mm_mul_pd(_mm_loadu_pd(c + 10), t);
-        __m128d a6 = _mm_mul_pd(_mm_loadu_pd(c + 12), t);
-        __m128d a7 = _mm_mul_pd(_mm_loadu_pd(c + 14), t);
-        for (k = 1; k < nc; k++) {
-            t = _mm_set1_pd(Tl[k]);
-            c += w;
-            a0 = _mm_add_pd(a0, _mm_mul_pd(_mm_loadu_pd(c), t));
-            a1 = _mm_add_pd(a1, _mm_mul_pd(_mm_loadu_pd(c + 2), t));
-            a2 = _mm_add_pd(a2, _mm_mul_pd(_mm_loadu_pd(c + 4), t));
-            a3 = _mm_add_pd(a3, _mm_mul_pd(_mm_loadu_pd(c + 6), t));
-            a4 = _mm_add_pd(a4, _mm_mul_pd(_mm_loadu_pd(c + 8), t));
-            a5 = _mm_add_pd(a5, _mm_mul_pd(_mm_loadu_pd(c + 10), t));
-            a6 = _mm_add_pd(a6, _mm_mul_pd(_mm_loadu_pd(c + 12), t));
-            a7 = _mm_add_pd(a7, _mm_mul_pd(_mm_loadu_pd(c + 14), t));
-        }
-        _mm_storeu_pd(o + j, a0);
-        _mm_storeu_pd(o + j + 2, a1);
-        _mm_storeu_pd(o + j + 4, a2);
-        _mm_storeu_pd(o + j + 6, a3);
-        _mm_storeu_pd(o + j + 8, a4);
-        _mm_storeu_pd(o + j + 10, a5);
-        _mm_storeu_pd(o + j + 12, a6);
-        _mm_storeu_pd(o + j + 14, a7);
-#else
-        double a0 = c[0] * Tl[0], a1 = c[1] * Tl[0], a2 = c[2] * Tl[0], a3 = c[3] * Tl[0];
-        double a4 = c[4] * Tl[0], a5 = c[5] * Tl[0], a6 = c[6] * Tl[0], a7 = c[7] * Tl[0];
-        double b0 = c[8] * Tl[0], b1 = c[9] * Tl[0], b2 = c[10] * Tl[0], b3 = c[11] * Tl[0];
-        double b4 = c[12] * Tl[0], b5 = c[13] * Tl[0], b6 = c[14] * Tl[0], b7 = c[15] * Tl[0];
-        for (k = 1; k < nc; k++) {
-            const double tk = Tl[k];
-            c += w;
-            a0 += c[0] * tk;
-            a1 += c[1] * tk;
-            a2 += c[2] * tk;
-            a3 += c[3] * tk;
-            a4 += c[4] * tk;
-            a5 += c[5] * tk;
-            a6 += c[6] * tk;
-            a7 += c[7] * tk;
-            b0 += c[8] * tk;
-            b1 += c[9] * tk;
-            b2 += c[10] * tk;
-            b3 += c[11] * tk;
-            b4 += c[12] * tk;
-            b5 += c[13] * tk;
-            b6 += c[14] * tk;
-            b7 += c[15] * tk;
-        }
-        o[j] = a0;
-        o[j + 1] = a1;
-        o[j + 2] = a2;
-        o[j + 3] = a3;
-        o[j + 4] = a4;
-        o[j + 5] = a5;
-        o[j + 6] = a6;
-        o[j + 7] = a7;
-        o[j + 8] = b0;
-        o[j + 9] = b1;
-        o[j + 10] = b2;
-        o[j + 11] = b3;
-        o[j + 12] = b4;
-        o[j + 13] = b5;
-        o[j + 14] = b6;
-        o[j + 15] = b7;
-#endif
+        zs__block16(m->c + j, w, Tl, nc, o + j);
     }
-    for (; j + 8 <= 2 * n; j += 8) {
-        const double *c = m->c + j;
-        const int nc = m->bcols[j / 8];
-#if defined(ZS__AVX)
-        __m256d t = _mm256_set1_pd(Tl[0]);
-        __m256d a0 = _mm256_mul_pd(_mm256_loadu_pd(c), t);
-        __m256d a1 = _mm256_mul_pd(_mm256_loadu_pd(c + 4), t);
-        for (k = 1; k < nc; k++) {
-            t = _mm256_set1_pd(Tl[k]);
-            c += w;
-            a0 = _mm256_add_pd(a0, _mm256_mul_pd(_mm256_loadu_pd(c), t));
-            a1 = _mm256_add_pd(a1, _mm256_mul_pd(_mm256_loadu_pd(c + 4), t));
-        }
-        _mm256_storeu_pd(o + j, a0);
-        _mm256_storeu_pd(o + j + 4, a1);
-#elif defined(ZS__SSE2)
-        __m128d t = _mm_set1_pd(Tl[0]);
-        __m128d a0 = _mm_mul_pd(_mm_loadu_pd(c), t), a1 = _mm_mul_pd(_mm_loadu_pd(c + 2), t);
-        __m128d a2 = _mm_mul_pd(_mm_loadu_pd(c + 4), t), a3 = _mm_mul_pd(_mm_loadu_pd(c + 6), t);
-        for (k = 1; k < nc; k++) {
-            t = _mm_set1_pd(Tl[k]);
-            c += w;
-            a0 = _mm_add_pd(a0, _mm_mul_pd(_mm_loadu_pd(c), t));
-            a1 = _mm_add_pd(a1, _mm_mul_pd(_mm_loadu_pd(c + 2), t));
-            a2 = _mm_add_pd(a2, _mm_mul_pd(_mm_loadu_pd(c + 4), t));
-            a3 = _mm_add_pd(a3, _mm_mul_pd(_mm_loadu_pd(c + 6), t));
-        }
-        _mm_storeu_pd(o + j, a0);
-        _mm_storeu_pd(o + j + 2, a1);
-        _mm_storeu_pd(o + j + 4, a2);
-        _mm_storeu_pd(o + j + 6, a3);
-#else
-        double a0 = c[0] * Tl[0], a1 = c[1] * Tl[0], a2 = c[2] * Tl[0], a3 = c[3] * Tl[0];
-        double a4 = c[4] * Tl[0], a5 = c[5] * Tl[0], a6 = c[6] * Tl[0], a7 = c[7] * Tl[0];
-        for (k = 1; k < nc; k++) {
-            const double tk = Tl[k];
-            c += w;
-            a0 += c[0] * tk;
-            a1 += c[1] * tk;
-            a2 += c[2] * tk;
-            a3 += c[3] * tk;
-            a4 += c[4] * tk;
-            a5 += c[5] * tk;
-            a6 += c[6] * tk;
-            a7 += c[7] * tk;
-        }
-        o[j] = a0;
-        o[j + 1] = a1;
-        o[j + 2] = a2;
-        o[j + 3] = a3;
-        o[j + 4] = a4;
-        o[j + 5] = a5;
-        o[j + 6] = a6;
-        o[j + 7] = a7;
-#endif
-    }
+    for (; j + 8 <= 2 * n; j += 8)
+        zs__block8(m->c + j, w, Tl, m->bcols[j / 8], o + j);
     for (; j < 2 * n; j += 2) { /* rows not padded (a table emitted otherwise): pairs */
         const double *c = m->c + j;
         double a0 = c[0] * Tl[0], a1 = c[1] * Tl[0];
@@ -27309,7 +27177,7 @@ static int zs__force_history(const zs__force_table *t, double lam, size_t n, con
     zs__piece_t P[2];
     size_t i;
     zs__force_core(t, lam, 1, v, &e, &xi, &ip, &xl);
-    lg = t->log_piece[ip];
+    lg = t->pieces.kind[ip] == ZS__LOG;
     tau_dc = v[1];
     tau_d = exp(v[2]);
     if (lg) {
@@ -27378,14 +27246,182 @@ static int zs__force_history(const zs__force_table *t, double lam, size_t n, con
     return ZS_OK;
 }
 
+/* what the passes of zs_history share: the table, its summary at lambda, the time pieces'
+   maps and contracted coefficients, T_k(x_lambda) */
+typedef struct {
+    const zs__exact_table *t;
+    zs__core_t c;
+    zs__piece_t P[4];
+    double Tl[ZS__MAX_LAMDEG], tau_s, imp_end;
+} zs__hist_t;
+
+/* one block of points between the passes: time piece, sub-piece and local x of each point,
+   delta = exp(f) dm and sqrt(delta) = exp(f / 2) sm, f / 2 (hv) and the impulse (Iv) */
+typedef struct {
+    int pc[ZS__BLOCK], sb[ZS__BLOCK];
+    double xs[ZS__BLOCK], Iv[ZS__BLOCK], dm[ZS__BLOCK], sm[ZS__BLOCK], hv[ZS__BLOCK];
+} zs__blk_t;
+
+/* the summary at lambda and the time pieces' map constants (exact.table._scaled_maps) */
+static void zs__history_setup(const zs__exact_table *t, double lam, zs__hist_t *H)
+{
+    zs__piece_t *P = H->P;
+    double inf = HUGE_VAL, tau_dc;
+    int p, s, log_piece;
+    H->t = t;
+    zs__core(t, lam, 1, &H->c);
+    tau_dc = H->c.v[1];
+    log_piece = t->pieces.kind[H->c.ip] == ZS__LOG;
+    H->tau_s = log_piece ? tau_dc + lam * (t->s_orbit + t->s_transient * pow(lam, -5.0 / 3.0))
+                         : H->c.tau_w0;
+    /* T_k(x_lambda) for the lambda contraction */
+    H->Tl[0] = 1.0;
+    H->Tl[1] = H->c.x;
+    for (s = 2; s < ZS__MAX_LAMDEG; s++)
+        H->Tl[s] = H->Tl[s - 1] * 2.0 * H->c.x - H->Tl[s - 2];
+    for (p = 0; p < 4; p++) {
+        for (s = 0; s < ZS__MAX_SUB; s++)
+            P[p].deg[s] = 0;
+        P[p].i1 = P[p].i2 = P[p].i3 = 0.0;
+    }
+    P[0].a = t->piece[0].n_sub * (double)t->piece[0].n_sub / tau_dc;
+    zs__lin_log(&P[1], t->piece[1].n_sub, tau_dc, H->tau_s,
+                t->c_stretch * (log_piece ? pow(t->log_from / lam, 2.0 / 3.0) : 1.0),
+                log_piece ? inf : t->c_end * (1.0 + lam), inf);
+    if (log_piece)
+        zs__lin_log(&P[2], t->piece[2].n_sub, H->tau_s, H->c.tau_w0, inf, lam, lam);
+    P[3].a = t->piece[3].n_sub * (double)t->piece[3].n_sub / (H->c.tau_d - H->c.tau_w0);
+    P[3].d = H->c.tau_d;
+    /* 1 / sqrt(a) of the square-root maps: sqrt(tau) = z / sqrt(a) for the force */
+    P[0].ra = 1.0 / sqrt(P[0].a);
+    P[3].ra = 1.0 / sqrt(P[3].a);
+    H->imp_end = 1.0 + H->c.e;
+}
+
+/* the sub-piece and local x of a point at reduced time z (times k) in piece p, its
+   coefficients contracted on first use */
+static void zs__place(zs__hist_t *H, zs__blk_t *ZS__RESTRICT B, size_t b, int p, double z)
+{
+    zs__piece_t *Q = &H->P[p];
+    int k = H->t->piece[p].n_sub, sub;
+    if (!(z >= 0.0)) /* rounding at a piece's start (or a NaN): the first sub-piece */
+        z = 0.0;
+    sub = z < (double)k ? (int)z : k - 1;
+    B->xs[b] = 2.0 * (z - sub) - 1.0;
+    B->sb[b] = sub;
+    if (Q->deg[sub] == 0)
+        zs__contract(&H->t->piece[p], H->c.ip, sub, H->Tl, Q);
+}
+
+/* first pass over a block: each point's time piece, sub-piece and local variable */
+static void zs__locate_block(zs__hist_t *H, const double *tau, size_t nb,
+                             zs__blk_t *ZS__RESTRICT B)
+{
+    /* the piece bounds in locals: the stores into B cannot change them */
+    const double tau_dc = H->c.v[1], tau_s = H->tau_s, tau_w0 = H->c.tau_w0, tau_d = H->c.tau_d;
+    double ln[ZS__BLOCK + 1], lq[ZS__BLOCK + 1], lz[ZS__BLOCK];
+    size_t li[ZS__BLOCK], nl = 0, l, b;
+    for (b = 0; b < nb; b++) {
+        double tt = tau[b];
+        zs__piece_t *Q;
+        int p = tt > tau_dc ? 1 + (tt >= tau_s) + (tt >= tau_w0) + (tt >= tau_d) : 0;
+        B->pc[b] = p;
+        /* delta = exp(f) dm and sqrt(delta) = exp(f / 2) sm */
+        B->dm[b] = B->sm[b] = 1.0;
+        if (p == 4) {
+            B->dm[b] = B->sm[b] = 0.0;
+            continue;
+        }
+        Q = &H->P[p];
+        if (p == 0 || p == 3) {
+            double z;
+            B->dm[b] = p == 0 ? tt : Q->d - tt;
+            z = sqrt(B->dm[b] * Q->a);
+            B->sm[b] = z * Q->ra; /* sqrt(dm) from the map's z = sqrt(a dm) */
+            zs__place(H, B, b, p, z);
+        } else {
+            /* u = ln(1 + p) + ts i3 - ln(1 + q), p = ts i1, q = te i2 (table_build.lin_log),
+               the logarithms as one, ln(1 + (p - q) / (1 + q)): log1p of a small argument
+               keeps u's relative accuracy on a short piece (where u is small and
+               a = k / (u1 - u0) large), at the cost of one log1p a point instead of two.
+               The logarithm for all such points of the block at once (zs__log1p_pass) */
+            double ts = tt - Q->s, pp = ts * Q->i1, qq = (Q->e - tt) * Q->i2, z = -Q->u0;
+            if (Q->i3 != 0.0)
+                z += ts * Q->i3;
+            li[nl] = b;
+            lz[nl] = z;
+            ln[nl] = pp - qq;
+            lq[nl++] = 1.0 + qq;
+        }
+    }
+    ln[nl] = 0.0; /* an even count for the pass */
+    lq[nl] = 1.0;
+    zs__log1p_pass((nl + 1) / 2, ln, lq);
+    for (l = 0; l < nl; l++)
+        zs__place(H, B, li[l], B->pc[li[l]], (lz[l] + ln[l]) * H->P[B->pc[li[l]]].a);
+}
+
+/* Horner's rule for N (1, 2 or 4) neighbouring points of one sub-piece with degree j + 1:
+   f / 2 into hv (the exp pass's argument) and the impulse into Iv; independent chains which
+   the compiler pairs (SSE2); a constant N, unrolled, keeps them in registers */
+#define ZS__HORNER(name, N)                                                                \
+    static void name(double (*m)[2], int j, const double *x, double *ZS__RESTRICT hv,        \
+                     double *ZS__RESTRICT Iv)                                                \
+    {                                                                                    \
+        double f[N], I[N];                                                               \
+        int i;                                                                           \
+        ZS__UNROLL for (i = 0; i < (N); i++) {                                           \
+            f[i] = m[j][0];                                                              \
+            I[i] = m[j][1];                                                              \
+        }                                                                                \
+        for (j = j - 1; j >= 0; j--) {                                                   \
+            ZS__UNROLL for (i = 0; i < (N); i++) {                                       \
+                f[i] = f[i] * x[i] + m[j][0];                                            \
+                I[i] = I[i] * x[i] + m[j][1];                                            \
+            }                                                                            \
+        }                                                                                \
+        ZS__UNROLL for (i = 0; i < (N); i++) {                                           \
+            hv[i] = 0.5 * f[i];                                                          \
+            Iv[i] = I[i];                                                                \
+        }                                                                                \
+    }
+ZS__HORNER(zs__horner4, 4)
+ZS__HORNER(zs__horner2, 2)
+ZS__HORNER(zs__horner1, 1)
+
+/* second pass: four or two neighbouring points of the same sub-piece (sorted times: most)
+   together */
+static void zs__horner_block(zs__hist_t *H, size_t nb, zs__blk_t *ZS__RESTRICT B)
+{
+    const double imp_end = H->imp_end;
+    size_t b;
+    for (b = 0; b < nb; b++) {
+        int p = B->pc[b], sub = B->sb[b], j;
+        double (*m)[2];
+        if (p == 4) {
+            B->hv[b] = 0.0;
+            B->Iv[b] = imp_end;
+            continue;
+        }
+        m = H->P[p].m[sub];
+        j = H->P[p].deg[sub] - 1;
+        if (b + 3 < nb && B->pc[b + 3] == p && B->sb[b + 3] == sub && B->pc[b + 1] == p
+            && B->sb[b + 1] == sub && B->pc[b + 2] == p && B->sb[b + 2] == sub) {
+            zs__horner4(m, j, B->xs + b, B->hv + b, B->Iv + b);
+            b += 3;
+        } else if (b + 1 < nb && B->pc[b + 1] == p && B->sb[b + 1] == sub) {
+            zs__horner2(m, j, B->xs + b, B->hv + b, B->Iv + b);
+            b++;
+        } else
+            zs__horner1(m, j, B->xs + b, B->hv + b, B->Iv + b);
+    }
+}
+
 int zs_history(double lam, int contact_end, size_t n, const double *tau,
                double *delta, double *velocity, double *force, double *impulse)
 {
     const zs__exact_table *t;
-    zs__core_t c;
-    zs__piece_t P[4];
-    double Tl[ZS__MAX_LAMDEG], tau_s, inf = HUGE_VAL, tau_dc, imp_end;
-    int p, s, log_piece;
+    zs__hist_t H;
     size_t i0;
     t = zs__contact_end_ok(contact_end) ? zs__table(contact_end) : NULL;
     if (t == NULL && zs__contact_end_ok(contact_end)) {
@@ -27400,196 +27436,40 @@ int zs_history(double lam, int contact_end, size_t n, const double *tau,
         zs__fill_nan(n, impulse);
         return ZS_EDOM;
     }
-    zs__core(t, lam, 1, &c);
-    tau_dc = c.v[1];
-    log_piece = t->log_piece[c.ip];
-    tau_s = log_piece ? tau_dc + lam * (t->s_orbit + t->s_transient * pow(lam, -5.0 / 3.0))
-                      : c.tau_w0;
-    /* T_k(x_lambda) for the lambda contraction */
-    Tl[0] = 1.0;
-    Tl[1] = c.x;
-    for (s = 2; s < ZS__MAX_LAMDEG; s++)
-        Tl[s] = Tl[s - 1] * 2.0 * c.x - Tl[s - 2];
-    for (p = 0; p < 4; p++) {
-        for (s = 0; s < ZS__MAX_SUB; s++)
-            P[p].deg[s] = 0;
-        P[p].i1 = P[p].i2 = P[p].i3 = 0.0;
-    }
-    P[0].a = t->piece[0].n_sub * (double)t->piece[0].n_sub / tau_dc;
-    zs__lin_log(&P[1], t->piece[1].n_sub, tau_dc, tau_s,
-                t->c_stretch * (log_piece ? pow(t->log_from / lam, 2.0 / 3.0) : 1.0),
-                log_piece ? inf : t->c_end * (1.0 + lam), inf);
-    if (log_piece)
-        zs__lin_log(&P[2], t->piece[2].n_sub, tau_s, c.tau_w0, inf, lam, lam);
-    P[3].a = t->piece[3].n_sub * (double)t->piece[3].n_sub / (c.tau_d - c.tau_w0);
-    P[3].d = c.tau_d;
-    /* 1 / sqrt(a) of the square-root maps: sqrt(tau) = z / sqrt(a) for the force */
-    P[0].ra = 1.0 / sqrt(P[0].a);
-    P[3].ra = 1.0 / sqrt(P[3].a);
-    imp_end = 1.0 + c.e;
+    zs__history_setup(t, lam, &H);
     /* blocks of points in three passes (piece and local variable; Horner; exp and outputs):
        the Horner pass has no calls, so the processor overlaps the points' chains; the last
        pass has no branches, so the compiler pairs the points (SSE2) */
     for (i0 = 0; i0 < n; i0 += ZS__BLOCK) {
         size_t nb = n - i0 < ZS__BLOCK ? n - i0 : ZS__BLOCK, b, h2 = (nb + 1) / 2;
-        int pc[ZS__BLOCK], sb[ZS__BLOCK];
-        double xs[ZS__BLOCK], fv[ZS__BLOCK], Iv[ZS__BLOCK], dm[ZS__BLOCK], sm[ZS__BLOCK];
-        double hv[ZS__BLOCK], ln[ZS__BLOCK + 1], lq[ZS__BLOCK + 1], lz[ZS__BLOCK];
-        size_t li[ZS__BLOCK], nl = 0, l;
-        for (b = 0; b < nb; b++) {
-            double tt = tau[i0 + b], z;
-            int k, sub;
-            zs__piece_t *Q;
-            if (tt > tau_dc)
-                p = 1 + (tt >= tau_s) + (tt >= c.tau_w0) + (tt >= c.tau_d);
-            else
-                p = 0;
-            pc[b] = p;
-            /* delta = exp(f) dm and sqrt(delta) = exp(f / 2) sm */
-            dm[b] = sm[b] = 1.0;
-            if (p == 4) {
-                dm[b] = sm[b] = 0.0;
-                continue;
-            }
-            Q = &P[p];
-            k = t->piece[p].n_sub;
-            if (p == 0) {
-                z = sqrt(tt * Q->a);
-                dm[b] = tt;
-                sm[b] = z * Q->ra; /* sqrt(tau) from the map's z = sqrt(a tau) */
-            } else if (p == 3) {
-                z = sqrt((Q->d - tt) * Q->a);
-                dm[b] = Q->d - tt;
-                sm[b] = z * Q->ra;
-            } else {
-                /* u = ln(1 + p) + ts i3 - ln(1 + q), p = ts i1, q = te i2 (table_build.lin_log),
-                   the logarithms as one, ln(1 + (p - q) / (1 + q)): log1p of a small argument
-                   keeps u's relative accuracy on a short piece (where u is small and
-                   a = k / (u1 - u0) large), at the cost of one log1p a point instead of two.
-                   The logarithm for all such points of the block at once (zs__log1p_pass) */
-                double ts = tt - Q->s, pp = ts * Q->i1, qq = (Q->e - tt) * Q->i2;
-                z = -Q->u0;
-                if (Q->i3 != 0.0)
-                    z += ts * Q->i3;
-                li[nl] = b;
-                lz[nl] = z;
-                ln[nl] = pp - qq;
-                lq[nl++] = 1.0 + qq;
-                continue;
-            }
-            if (!(z >= 0.0)) /* rounding at a piece's start (or a NaN): the first sub-piece */
-                z = 0.0;
-            sub = z < (double)k ? (int)z : k - 1;
-            xs[b] = 2.0 * (z - sub) - 1.0;
-            sb[b] = sub;
-            if (Q->deg[sub] == 0)
-                zs__contract(&t->piece[p], c.ip, sub, Tl, Q);
-        }
-        ln[nl] = 0.0; /* an even count for the pass */
-        lq[nl] = 1.0;
-        zs__log1p_pass((nl + 1) / 2, ln, lq);
-        for (l = 0; l < nl; l++) {
-            zs__piece_t *Q = &P[pc[li[l]]];
-            int k = t->piece[pc[li[l]]].n_sub, sub;
-            double z = (lz[l] + ln[l]) * Q->a;
-            if (!(z >= 0.0))
-                z = 0.0;
-            sub = z < (double)k ? (int)z : k - 1;
-            xs[li[l]] = 2.0 * (z - sub) - 1.0;
-            sb[li[l]] = sub;
-            if (Q->deg[sub] == 0)
-                zs__contract(&t->piece[pc[li[l]]], c.ip, sub, Tl, Q);
-        }
-        /* Horner's rule, f / 2 into hv (the exp pass's argument); four or two neighbouring
-           points of the same sub-piece (sorted times: most) together, independent chains
-           which the compiler pairs (SSE2) */
-        for (b = 0; b < nb; b++) {
-            double (*m)[2];
-            double x = xs[b], f, I;
-            int j;
-            if (pc[b] == 4) {
-                hv[b] = 0.0;
-                Iv[b] = imp_end;
-                continue;
-            }
-            m = P[pc[b]].m[sb[b]];
-            j = P[pc[b]].deg[sb[b]] - 1;
-            if (b + 3 < nb && pc[b + 3] == pc[b] && sb[b + 3] == sb[b] && pc[b + 1] == pc[b]
-                && sb[b + 1] == sb[b] && pc[b + 2] == pc[b] && sb[b + 2] == sb[b]) {
-                double x1 = xs[b + 1], x2 = xs[b + 2], x3 = xs[b + 3], f1, f2, f3, I1, I2, I3;
-                f = f1 = f2 = f3 = m[j][0];
-                I = I1 = I2 = I3 = m[j][1];
-                for (j = j - 1; j >= 0; j--) {
-                    f = f * x + m[j][0];
-                    f1 = f1 * x1 + m[j][0];
-                    f2 = f2 * x2 + m[j][0];
-                    f3 = f3 * x3 + m[j][0];
-                    I = I * x + m[j][1];
-                    I1 = I1 * x1 + m[j][1];
-                    I2 = I2 * x2 + m[j][1];
-                    I3 = I3 * x3 + m[j][1];
-                }
-                hv[b] = 0.5 * f;
-                hv[b + 1] = 0.5 * f1;
-                hv[b + 2] = 0.5 * f2;
-                hv[b + 3] = 0.5 * f3;
-                Iv[b] = I;
-                Iv[b + 1] = I1;
-                Iv[b + 2] = I2;
-                Iv[b + 3] = I3;
-                b += 3;
-                continue;
-            }
-            if (b + 1 < nb && pc[b + 1] == pc[b] && sb[b + 1] == sb[b]) {
-                double x1 = xs[b + 1], f1, I1;
-                f = f1 = m[j][0];
-                I = I1 = m[j][1];
-                for (j = j - 1; j >= 0; j--) {
-                    f = f * x + m[j][0];
-                    f1 = f1 * x1 + m[j][0];
-                    I = I * x + m[j][1];
-                    I1 = I1 * x1 + m[j][1];
-                }
-                hv[b] = 0.5 * f;
-                hv[b + 1] = 0.5 * f1;
-                Iv[b] = I;
-                Iv[b + 1] = I1;
-                b++;
-                continue;
-            }
-            f = m[j][0];
-            I = m[j][1];
-            for (j = j - 1; j >= 0; j--) {
-                f = f * x + m[j][0];
-                I = I * x + m[j][1];
-            }
-            hv[b] = 0.5 * f;
-            Iv[b] = I;
-        }
+        zs__blk_t B;
+        double fv[ZS__BLOCK];
+        zs__locate_block(&H, tau + i0, nb, &B);
+        zs__horner_block(&H, nb, &B);
         if (nb % 2) { /* an even count for the paired loops below */
-            hv[nb] = 0.0;
-            dm[nb] = sm[nb] = 0.0;
+            B.hv[nb] = 0.0;
+            B.dm[nb] = B.sm[nb] = 0.0;
         }
         /* h = exp(f / 2) (zs__exp_pass: the points in pairs); delta = h^2 dm and sqrt(delta)
            = h sm for the force without a square root */
-        zs__exp_pass(h2, hv);
+        zs__exp_pass(h2, B.hv);
         for (b = 0; b < 2 * h2; b++) {
-            double h = hv[b];
-            fv[b] = h * h * dm[b];
-            hv[b] = h * sm[b] * fv[b];
+            double h = B.hv[b];
+            fv[b] = h * h * B.dm[b];
+            B.hv[b] = h * B.sm[b] * fv[b];
         }
         if (delta != NULL)
             for (b = 0; b < nb; b++)
                 delta[i0 + b] = fv[b];
         if (force != NULL)
             for (b = 0; b < nb; b++)
-                force[i0 + b] = hv[b];
+                force[i0 + b] = B.hv[b];
         if (impulse != NULL)
             for (b = 0; b < nb; b++)
-                impulse[i0 + b] = Iv[b];
+                impulse[i0 + b] = B.Iv[b];
         if (velocity != NULL)
             for (b = 0; b < nb; b++)
-                velocity[i0 + b] = 1.0 - Iv[b];
+                velocity[i0 + b] = 1.0 - B.Iv[b];
     }
     return ZS_OK;
 }
@@ -27697,7 +27577,7 @@ int zs_ham0_history(double lam, size_t n, const double *tau, double *delta, doub
 }
 
 /* K_cc, K_sc, K_ss (a, theta) on [0, T] (left, T <= pi/2) or [pi - r, pi] (right) by the
-   Gauss-Jacobi rule with the square-root singularity in the weight (ham.quadrature) */
+   Gauss-Jacobi rule with the square-root singularity in the weight (numerics.sqrt_integrals) */
 static void zs__K_piece(double a, double T, int right, double K[3])
 {
     int i;
@@ -27739,16 +27619,9 @@ static void zs__h1_eval(double lam, double v[6])
 {
     int i, j, f, deg = 0;
     double g, x, acx, T[ZS__MAX_H1];
-    i = 0;
-    for (j = 1; j < ZS__H1_PIECES; j++)
-        if (zs__h1_start[j] <= lam)
-            i = j;
-    g = zs__h1_sqrt[i] ? sqrt(lam - zs__h1_start[i] > 0.0 ? lam - zs__h1_start[i] : 0.0) : lam;
-    x = (2.0 * g - zs__h1_ga[i] - zs__h1_gb[i]) / (zs__h1_gb[i] - zs__h1_ga[i]);
-    if (x < -1.0)
-        x = -1.0;
-    if (x > 1.0)
-        x = 1.0;
+    i = zs__piece_of(&zs__h1_pieces, lam, zs__h1_pieces.n - 1);
+    g = zs__variable(&zs__h1_pieces, i, lam);
+    x = zs__local_x(&zs__h1_pieces, i, g);
     for (f = 0; f < 6; f++)
         if (zs__h1_len[i * 6 + f] > deg)
             deg = zs__h1_len[i * 6 + f];

@@ -19,6 +19,7 @@ from __future__ import annotations
 import difflib
 import json
 import math
+import re
 from dataclasses import dataclass
 from collections.abc import Callable
 from pathlib import Path
@@ -26,7 +27,7 @@ from types import ModuleType
 from typing import Any
 
 __all__ = ["Artefact", "ARTEFACTS", "names", "get", "locate", "check", "build",
-           "text_diff", "Texts", "FreshFn", "SameFn", "WriteFn"]
+           "text_diff", "text_skeleton", "text_drift", "Texts", "FreshFn", "SameFn", "WriteFn"]
 
 #: ``{path relative to the checkout root: text}`` of an artefact's files.
 Texts = dict[str, str]
@@ -149,10 +150,46 @@ def _table_module(text: str) -> dict[str, Any]:
     return ns
 
 
-def _table(builder_name: str, fields: tuple[tuple[str, str], ...],
-           what: str) -> tuple[FreshFn, SameFn]:
-    """fresh/same of a Chebyshev table in generated/ (compared numerically within the builder's
-    ``CHECK_RTOL``, plus its inputs hash: the node values come from floating-point solvers)."""
+#: A number as the generated files print it: digits with an optional sign, decimal places,
+#: exponent or further dotted parts (a version such as 1.17.1), not inside a word.
+_NUMBER = re.compile(r"(?<![\w.])-?\d+(?:\.\d+)*(?:\.)?(?:[eE][-+]?\d+)?(?![\w])")
+#: A run of masked numbers (a coefficient tuple or matrix string, whatever its length).
+_RUN = re.compile(r"#(?:(?:, |,| )#)+")
+#: The inputs hash (checked on its own).
+_HASH = re.compile(r"(Inputs hash: |INPUTS_HASH = ')\w+")
+
+
+def text_skeleton(text: str) -> str:
+    """``text`` with every number masked (a run of numbers as one ``#``) and whitespace runs
+    as one space: what must not change between a committed table and a fresh rendering of it
+    (comments, names, layout) while its numbers are compared within the builder's tolerance."""
+    return re.sub(r"\s+", " ", _masked(text)).strip()
+
+
+def _masked(text: str) -> str:
+    return _RUN.sub("#", _NUMBER.sub("#", _HASH.sub(r"\1#", text)))
+
+
+def text_drift(rel: str, old: str, new: str) -> list[str]:
+    """The lines (numbers masked) where a committed table's text differs from a fresh
+    rendering's; empty when only numbers differ."""
+    if text_skeleton(old) == text_skeleton(new):
+        return []
+    diff = difflib.unified_diff(_masked(old).splitlines(), _masked(new).splitlines(),
+                                f"{rel} (committed)", f"{rel} (fresh)", lineterm="", n=0)
+    return [f"{rel}: its text differs from a fresh rendering (numbers masked):",
+            *[line for line in diff if not line.startswith(("---", "+++"))]]
+
+
+def _table(builder_name: str, what: str) -> tuple[FreshFn, SameFn, WriteFn]:
+    """fresh/same/write of a Chebyshev table in generated/ (the node values come from
+    floating-point solvers).
+
+    ``same``: its numbers within the builder's tolerance (``builder.compare``), its text (the
+    numbers masked: comments, names, layout) equal to a fresh rendering's, and its inputs hash.
+    ``write``: where the committed numbers agree with the rebuild, the table is re-rendered with
+    the committed numbers (a rebuild on another machine, or a change of text, moves no number);
+    else the rebuilt table is written."""
     # fresh text -> the tables it was rendered from (what builder.compare reads)
     built: dict[str, Any] = {}
 
@@ -173,18 +210,36 @@ def _table(builder_name: str, fields: tuple[tuple[str, str], ...],
         b = builder()
         try:
             o = _table_module(old)
-            stored = {k: o[a] for k, a in fields}
+            stored = b.as_tables(o)
         except Exception as exc:  # a broken committed file is stale, not a crash
             return [f"{rel} does not load: {type(exc).__name__}: {exc}"]
         tables = built[new] if new in built else b.build_tables()
         problems: list[str] = b.compare(stored, tables)
+        problems += text_drift(rel, old, new)
         current = _table_module(new)["INPUTS_HASH"]
         if o.get("INPUTS_HASH") != current:
             problems.append(f"inputs hash {o.get('INPUTS_HASH')} != current {current} "
                             f"({what} changed)")
         return problems
 
-    return fresh, same
+    def write(root: Path | None, texts: Texts) -> list[Path]:
+        b = builder()
+        out: Texts = {}
+        for rel, new in texts.items():
+            p = locate(root, rel)
+            out[rel] = new
+            if p.exists():
+                try:
+                    ns = _table_module(p.read_text(encoding="utf-8"))
+                except Exception:  # a broken committed file: write the rebuild
+                    continue
+                stored = b.as_tables(ns)
+                tables = built[new] if new in built else b.build_tables()
+                if not b.compare(stored, tables):
+                    out[rel] = b.render(stored)
+        return _write_texts(root, out)
+
+    return fresh, same, write
 
 
 def _envelopes_fresh(root: Path | None) -> Texts:
@@ -343,16 +398,12 @@ def _lammps() -> ModuleType:
     return lammps_artefacts
 
 
-_EXACT_FRESH, _EXACT_SAME = _table(
-    "zener_sym.exact.table_build", (("summary", "SUMMARY"), ("history", "HISTORY")),
-    "the builder or the solver")
-_FORCE_FRESH, _FORCE_SAME = _table(
-    "zener_sym.exact.force_table_build", (("summary", "SUMMARY"), ("history", "HISTORY")),
-    "the builder, the solvers or the plate table")
-_HAM1_FRESH, _HAM1_SAME = _table(
-    "zener_sym.ham.table_build", (("LAM_CONT", "LAM_CONT"), ("PIECES", "PIECES"),
-                                  ("COEF", "COEF")),
-    "the builder, the ham1 series or the generated ham1 kernels")
+_EXACT_FRESH, _EXACT_SAME, _EXACT_WRITE = _table("zener_sym.exact.table_build",
+                                                  "the builder or the solver")
+_FORCE_FRESH, _FORCE_SAME, _FORCE_WRITE = _table(
+    "zener_sym.exact.force_table_build", "the builder, the solvers or the plate table")
+_HAM1_FRESH, _HAM1_SAME, _HAM1_WRITE = _table(
+    "zener_sym.ham.table_build", "the builder, the ham1 series or the generated ham1 kernels")
 
 #: Every artefact, in the order ``regen`` builds them (an artefact after those it reads: the
 #: ham1 table hashes the generated kernels, the envelopes use the tables).
@@ -365,12 +416,13 @@ ARTEFACTS: tuple[Artefact, ...] = (
     Artefact("formulas", "the derived equations in the paper's notation", ("FORMULAS.md",),
              _formulas, alias="generate, derive --markdown"),
     Artefact("exact-table", "Chebyshev tables of the fast exact model",
-             ("generated/exact_table.py",), _EXACT_FRESH, _EXACT_SAME, alias="exact-table"),
+             ("generated/exact_table.py",), _EXACT_FRESH, _EXACT_SAME, _EXACT_WRITE,
+             alias="exact-table"),
     Artefact("exact-force-table", "Chebyshev tables of the exact model's force-free end (grains)",
-             ("generated/exact_force_table.py",), _FORCE_FRESH, _FORCE_SAME,
+             ("generated/exact_force_table.py",), _FORCE_FRESH, _FORCE_SAME, _FORCE_WRITE,
              alias="exact-table --contact-end force"),
     Artefact("ham1-table", "Chebyshev tables of the ham1 summary", ("generated/ham1_table.py",),
-             _HAM1_FRESH, _HAM1_SAME, alias="ham1-table"),
+             _HAM1_FRESH, _HAM1_SAME, _HAM1_WRITE, alias="ham1-table"),
     Artefact("lambda-series", "coefficients of the small- and large-lambda series",
              ("src/zener_sym/data/lambda_series.json",), _lambda_series_fresh,
              needs_checkout=False),

@@ -13,18 +13,17 @@ from __future__ import annotations
 
 import functools
 import importlib
-from collections.abc import Mapping, Sequence
-from typing import Any, TypedDict
+from typing import TypedDict
 
 import numpy as np
 import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
+from ..numerics.cheb_table import Index, SummaryTable, history_tables, line_coefficients
+from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
-from .force_table_layout import ForceLayout, piece_variable, recovery_z_end
-from .table_layout import parse_array
+from .force_table_layout import ForceLayout, recovery_z_end
 
 __all__ = ["LAM_MIN", "LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range", "summary",
            "summary_derivative", "log_quantity", "history"]
@@ -36,42 +35,22 @@ _RANGE = ("LAM_MIN", "LAM_MAX")
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
 HISTORY_ATOL = 1e-10
-
-#: Lambda-piece indices and row indices.
-_Index = npt.NDArray[np.intp]
-#: One time piece's history layout (``_history_layout``): [lambda piece, time degree, lambda
-#: degree, 2 * sub-piece + field] monomial coefficients, the sub-piece count and the degree.
-_PieceLayout = tuple[FloatArray, int, int]
+#: One time piece's history (``cheb_table.history_rows``).
+_PieceLayout = tuple[list[FloatArray | None], int, int, npt.NDArray[np.int_]]
 
 
 class _Tables(TypedDict):
     """The generated table, arranged for evaluation (``_tables``)."""
 
     layout: ForceLayout
-    edges: FloatArray
-    log: npt.NDArray[np.bool_]
-    ga: FloatArray
-    gb: FloatArray
-    summary: FloatArray
-    dsummary: FloatArray
+    summary: SummaryTable
     history: dict[str, _PieceLayout]
-
-
-def _pad(mats: Sequence[Sequence[Sequence[float]]]) -> FloatArray:
-    """One zero-padded array [lambda piece, field, degree] from per-piece coefficient tuples."""
-    n_f = len(mats[0])
-    deg = max(len(c) for m in mats for c in m)
-    out = np.zeros((len(mats), n_f, deg))
-    for p, m in enumerate(mats):
-        for f, c in enumerate(m):
-            out[p, f, : len(c)] = c
-    return out
 
 
 def __getattr__(name: str) -> float:
     if name in _RANGE:
-        edges = _tables()["edges"]
-        return float(edges[0] if name == "LAM_MIN" else edges[-1])
+        s = _tables()["summary"]
+        return s.lo if name == "LAM_MIN" else s.hi
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
@@ -80,37 +59,9 @@ def _tables() -> _Tables:
     """The generated table, loaded on first use; its layout is read from it."""
     t = importlib.import_module("zener_sym.generated.exact_force_table")
     lay = ForceLayout.of(t)
-    edges = np.asarray(lay.LAM_PIECES, dtype=float)
-    log = edges[:-1] >= lay.LOG_FROM
-    summary = _pad([[t.SUMMARY[k][p] for k in lay.SUMMARY_KEYS] for p in range(len(log))])
-    return {"layout": lay, "edges": edges, "log": log, "ga": piece_variable(edges[:-1], log),
-            "gb": piece_variable(edges[1:], log), "summary": summary,
-            # numpy's stubs type chebder's result as any floating array; it is float64 (no copy)
-            "dsummary": np.asarray(np.polynomial.chebyshev.chebder(summary, axis=2), dtype=float),
-            "history": {piece: _history_layout(t.HISTORY, lay, piece, len(log))
-                        for piece in lay.TIME_PIECES}}
-
-
-def _history_layout(history: Mapping[tuple[str, str], Any], lay: ForceLayout, piece: str,
-                    n_lam: int) -> _PieceLayout:
-    """Per lambda piece, [time degree, lambda degree, 2 * sub-piece + field] (field 0: f,
-    1: v), the time direction converted to monomials in the sub-piece's x (Horner's rule, as
-    the plate's ``table._history_layout``), so the lambda contraction gives per line the pairs
-    (f_j, v_j) read as one complex128 per sub-piece by ``horner_take_pair``."""
-    n_sub = lay.N_SUB[piece]
-    mats = {k: [[parse_array(c) for c in history[(piece, k)][p]] for p in range(n_lam)]
-            for k in lay.HISTORY_KEYS}
-    deg = max(c.shape[0] for k in mats for subs in mats[k] for c in subs)
-    n_k = max(c.shape[1] for k in mats for subs in mats[k] for c in subs)
-    conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
-    per = np.zeros((n_lam, deg, n_k, 2 * n_sub))
-    for p in range(n_lam):
-        for f, k in enumerate(lay.HISTORY_KEYS):
-            for s, c in enumerate(mats[k][p]):
-                a = np.zeros((deg, n_k))
-                a[: c.shape[0], : c.shape[1]] = c
-                per[p, :, :, 2 * s + f] = conv @ a
-    return per, n_sub, deg
+    return {"layout": lay, "history": history_tables(t.HISTORY, lay.TIME_PIECES, lay.HISTORY_KEYS),
+            "summary": SummaryTable.of(t, "force-end table",
+                                       "; integrate instead (backend='scipy')")}
 
 
 def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
@@ -126,44 +77,13 @@ def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
     ndarray of bool
         lam's shape.
     """
-    lam_a = np.asarray(lam, dtype=float)
-    edges = _tables()["edges"]
-    inside: npt.NDArray[np.bool_] = (lam_a >= edges[0]) & (lam_a <= edges[-1])
-    return inside
+    return _tables()["summary"].in_range(lam)
 
 
-def _piece(lam: FloatArray) -> tuple[_Index, FloatArray]:
-    """Lambda piece index and the local Chebyshev variable x in [-1, 1]."""
-    if not np.all(in_range(lam)):
-        bad = float(lam[~in_range(lam)].ravel()[0])
-        t = _tables()
-        raise ValueError(f"lambda = {bad!r} is outside the force-end table's range "
-                         f"[{t['edges'][0]:g}, {t['edges'][-1]:g}]; integrate instead "
-                         f"(backend='scipy')")
-    t = _tables()
-    edges = t["edges"]
-    i = np.clip(np.searchsorted(edges, lam, side="right") - 1, 0, len(edges) - 2)
-    log = t["log"][i]
-    g = piece_variable(lam, log)
-    a, b = t["ga"][i], t["gb"][i]
-    return i, np.clip((2.0 * g - a - b) / (b - a), -1.0, 1.0)
-
-
-def _sum(tl: npt.NDArray[np.floating[Any]], ci: FloatArray) -> FloatArray:
-    """sum_k tl[:, k] ci[:, :, k] in a fixed order (each lambda's value independent of the
-    others evaluated with it)."""
-    vals: FloatArray = tl[:, :1] * ci[:, :, 0]
-    for k in range(1, min(tl.shape[1], ci.shape[2])):
-        vals += tl[:, k:k + 1] * ci[:, :, k]
-    return vals
-
-
-def _core(lam: FloatArray) -> tuple[dict[str, FloatArray], _Index, FloatArray,
-                                    npt.NDArray[np.floating[Any]]]:
-    i, x = _piece(lam)
-    c = _tables()["summary"]
-    tl = np.polynomial.chebyshev.chebvander(x, c.shape[2] - 1)
-    v = dict(zip(_tables()["layout"].SUMMARY_KEYS, _sum(tl, c[i]).T))
+def _core(lam: FloatArray) -> tuple[dict[str, FloatArray], Index, FloatArray, FloatArray]:
+    """The stored series at lam (1-D) and the derived xi, e, tau_d; piece index, x and the
+    Chebyshev basis."""
+    v, i, x, tl = _tables()["summary"].values(lam)
     v["xi"] = lam * v["xi_over_lam"]
     v["e"] = _solver.restitution(v["xi"], np.exp(v["log_e"]))
     v["tau_d"] = np.exp(v["log_tau_d"])
@@ -201,16 +121,6 @@ def summary(lam: RealArrayLike) -> dict[str, FloatArray]:
            "F_m": np.exp(v["log_F_m"]), "impulse": 1.0 + v["e"],
            "int_F2": np.exp(v["log_int_F2"]), "xi": v["xi"]}
     return {k: a.reshape(shape) for k, a in out.items()}
-
-
-def _dscale(lam: FloatArray, i: _Index) -> FloatArray:
-    """dx/dlambda of each lambda's piece variable x: 2 / ((b - a) lambda) on ln-lambda pieces,
-    2 / ((b - a) 2 sqrt(lambda)) on sqrt pieces (infinite at lambda = 0)."""
-    t = _tables()
-    width = t["gb"][i] - t["ga"][i]
-    with np.errstate(divide="ignore"):
-        return np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)),
-                        1.0 / (width * np.sqrt(lam)))
 
 
 #: Summary fields :func:`summary_derivative` differentiates (as the plate table's).
@@ -253,10 +163,7 @@ def summary_derivative(lam: RealArrayLike, field: str = "e") -> FloatArray:
                          "tables' variable is sqrt(lambda) (the fields have lambda^(3/2) terms, "
                          "so their second derivative is infinite there); ask at lambda > 0")
     v, i, x, _ = _core(lam1)
-    d = _tables()["dsummary"]
-    tl = np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0))
-    keys = _tables()["layout"].SUMMARY_KEYS
-    dv = {k: c * _dscale(lam1, i) for k, c in zip(keys, _sum(tl, d[i]).T)}
+    dv = _tables()["summary"].derivatives(lam1, i, x)
     dxi = v["xi_over_lam"] + lam1 * dv["xi_over_lam"]
     small = v["xi"] < 0.5
     de = np.where(small, -dxi / (2.0 * v["e"]), v["e"] * dv["log_e"])
@@ -296,28 +203,10 @@ def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatAr
     key = {"e": "log_e", "tau_d": "log_tau_d", "xi": "xi_over_lam"}.get(quantity)
     if key is None:
         raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
-    t = _tables()
-    k = t["layout"].SUMMARY_KEYS.index(key)
-    i, x = _piece(lam1)
-    c, d = t["summary"][:, k, :], t["dsummary"][:, k, :]
-    tl = np.polynomial.chebyshev.chebvander(x, c.shape[1] - 1)
-    val = np.einsum("nk,nk->n", tl, c[i])
-    der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i]) * _dscale(lam1, i)
+    val, der = _tables()["summary"].one(lam1, key)
     if quantity == "xi":  # ln xi = ln lambda + ln(xi / lambda)
         return np.log(lam1) + np.log(val), 1.0 / lam1 + der / val
     return val, der
-
-
-def _line_coefficients(per: FloatArray, ip: _Index, tl: npt.NDArray[np.floating[Any]], deg: int,
-                       n_sub: int) -> npt.NDArray[np.complex128]:
-    """[time degree, line * sub-piece] complex: the time piece's monomial coefficients per line
-    (real part f's, imaginary part v's), contracted in lambda."""
-    out = np.zeros((deg, len(ip), 2 * n_sub))
-    for p in np.unique(ip):
-        at = np.flatnonzero(ip == p)
-        c = per[int(p)]  # [deg, k, 2 n_sub]
-        out[:, at] = np.matmul(tl[at, : c.shape[1]], c)
-    return out.reshape(deg, -1).view(np.complex128)
 
 
 def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
@@ -351,7 +240,7 @@ def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
         lu, inv = np.unique(lam_b.ravel(), return_inverse=True)
     tau = tau_b.ravel()
     v, ip, _, tl = _core(lu)
-    log = _tables()["log"][ip]
+    log = _tables()["summary"].pieces.kind["log"][ip]
     tau_dc, tau_d = v["tau_dc"], v["tau_d"]
     tau_p = np.where(log, np.inf, np.exp(v["log_tau_p"]))  # the plate's tau_d (builder)
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -364,8 +253,8 @@ def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
     tables = _tables()["history"]
     coef: dict[str, tuple[npt.NDArray[np.complex128], int]] = {}
     for name in _tables()["layout"].TIME_PIECES:
-        per, n_sub, deg = tables[name]
-        coef[name] = (_line_coefficients(per, ip, tl, deg, n_sub), n_sub)
+        per, n_sub, deg, _ = tables[name]
+        coef[name] = (line_coefficients(per, ip, tl, deg, n_sub), n_sub)
     out = field_buffers(("delta", "velocity", "force", "impulse"), tau.shape)
     lam_1 = 1.5 * lu
     e_end = v["e"]

@@ -30,8 +30,12 @@ tau_d; ``K`` = ``N_SUB`` equal sub-pieces of the reduced time y, each mapped ont
 The velocity v = delta' is tabulated itself (absolute accuracy); the force F_c =
 sqrt(delta) (delta + (3/2) lambda v) and the impulse 1 - v follow from (delta, v).
 
-The node values come from a floating-point integrator: ``zener-sym exact-table --check``
-rebuilds and compares numerically (``CHECK_RTOL``), as for the plate's.
+A configuration of the one Chebyshev-table engine (:mod:`zener_sym.numerics.cheb_table_build`):
+``SPEC`` and the node function below; the history's weights are the plate's
+(``table_build.history_weight``).
+
+The node values come from a floating-point integrator: ``zener-sym regen --check
+exact-force-table`` rebuilds and compares numerically (``CHECK_RTOL``), as for the plate's.
 """
 from __future__ import annotations
 
@@ -43,12 +47,15 @@ import numpy as np
 
 from ..codegen import inputs_hash
 from ..codegen.tables import table_module
-from ..numerics.chebyshev import cheb_coefficients, cheb_nodes, trim_trailing
+from ..numerics import cheb_table_build as engine
+from ..numerics.cheb_table import TableSpec
+from ..numerics.cheb_table_build import NodeData, Tables
 from ..typing import FloatArray
 from . import table_build as _tb
-from .force_table_layout import ForceLayout, piece_variable, time_of
+from .force_table_layout import ForceLayout, time_of
 
-__all__ = ["LAYOUT", "build_tables", "render", "compare", "input_files", "table_path"]
+__all__ = ["SPEC", "LAYOUT", "build_tables", "render", "compare", "as_tables", "input_files",
+           "table_path"]
 
 #: Breakpoints of the lambda pieces (summary and history), [0, 1000].
 LAM_PIECES = (0.0, 0.25, 1.0, 2.0, 3.5, 5.0, 25.0, 150.0, 1000.0)
@@ -64,15 +71,20 @@ RTOL = 1e-13
 #: Trimming and rounding: the plate builder's (:mod:`.table_build`); ``--check``'s tolerance below.
 TRIM = _tb.TRIM
 #: ``--check``'s tolerance (as the plate's, ``table_build.CHECK_RTOL``, but wider). A rebuild
-#: on an AVX-512 machine (2026-11-26) differed from the committed table (built on an AVX2
-#: one) by 1.93e-10 in one array, ('R', 'f') 11: lambda in [0, 0.25], the last sub-piece of
-#: the recovery. That array has a plateau of 1e-11 coefficients in every degree from the
-#: corner lambda = 0, tau = tau_d, where tau_P - tau_d -> 0 and the map degenerates; the two
-#: builds trimmed it differently. On an 11 x 11 grid of the sub-piece f differs by 4.2e-9 at
-#: that corner, where delta = (tau_P - tau) exp(f) vanishes, and by at most 3.3e-11
-#: elsewhere (below the documented history bound, ``force_table.HISTORY_ATOL`` = 1e-10);
-#: the committed table is within 1.3e-12 of delta_m of the solver there. The plate's table
-#: rebuilt within 1e-10. A changed builder moves coefficients far more.
+#: on an AVX-512 machine (2026-11-26, and again 2026-11-27) differs from the committed table
+#: (built on an AVX2 one) by 1.93e-10 in one array, ('R', 'f') 11: lambda in [0, 0.25], the last
+#: sub-piece of the recovery, whose corner lambda = 0, tau = tau_d degenerates (tau_P - tau_d ->
+#: 0). Its coefficients are noise of the solves from degree 6 or so on, a plateau within a factor
+#: 3 of the trimming level, so the two builds trim it differently (12 x 22 committed, 7 x 14
+#: rebuilt); untrimmed, the rebuilt array still differs by the same 1.93e-10: it is the node
+#: values, not the trimming rule, that differ, and no threshold on them can be free of their
+#: last bits. ``zener-sym regen`` therefore keeps the committed numbers when a rebuild agrees
+#: within this tolerance (``artefacts._table``): a rebuild writes the committed bytes on any
+#: processor. On an 11 x 11 grid of the sub-piece f differs by 4.2e-9 at that corner, where
+#: delta = (tau_P - tau) exp(f) vanishes, and by at most 3.3e-11 elsewhere (below the
+#: documented history bound, ``force_table.HISTORY_ATOL`` = 1e-10); the committed table is
+#: within 1.3e-12 of delta_m of the solver there. The plate's table rebuilds within 1e-10. A
+#: changed builder moves coefficients far more.
 CHECK_RTOL = 1e-9
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m", "log_int_F2",
@@ -82,6 +94,11 @@ LAYOUT = ForceLayout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, N_SUB=N_SUB,
                      SUMMARY_KEYS=SUMMARY_KEYS)
 HISTORY_KEYS = LAYOUT.HISTORY_KEYS
 TIME_PIECES = LAYOUT.TIME_PIECES
+#: The table's description for the engine: sqrt(lambda) pieces below LOG_FROM, ln lambda above.
+SPEC = TableSpec(pieces=tuple(("log" if a >= LOG_FROM else "sqrt_lam", a, b)
+                              for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:])),
+                 fields=SUMMARY_KEYS, nodes=(N_LAM,) * (len(LAM_PIECES) - 1), trim=TRIM,
+                 check_rtol=CHECK_RTOL, digits=15)
 
 
 def is_log_piece(a: float) -> bool:
@@ -112,31 +129,10 @@ def piece_nodes(a: float, b: float) -> FloatArray:
     ndarray
         N_LAM nodes.
     """
-    x = cheb_nodes(N_LAM)
-    ga, gb = (float(piece_variable(v, is_log_piece(a))) for v in (a, b))
-    g = ga + (gb - ga) * (x + 1.0) / 2.0
-    nodes: FloatArray = np.exp(g) if is_log_piece(a) else g * g
-    return nodes
+    return engine.piece_nodes("log" if is_log_piece(a) else "sqrt_lam", a, b, N_LAM)
 
 
-def sub_nodes(piece: str) -> FloatArray:
-    """Reduced times y of the Chebyshev points of every sub-piece of a time piece.
-
-    Parameters
-    ----------
-    piece : str
-        A key of ``N_SUB``.
-
-    Returns
-    -------
-    ndarray
-        [sub-piece, point].
-    """
-    k, x = N_SUB[piece], cheb_nodes(N_TIME[piece])
-    return (np.arange(k)[:, None] + (x[None, :] + 1.0) / 2.0) / k
-
-
-def node_data(lam: float, log_piece: bool) -> _tb.NodeData:
+def node_data(lam: float, log_piece: bool) -> NodeData:
     """Summary values and history samples of one lambda > 0, from ``force_end.solve``.
 
     Parameters
@@ -156,11 +152,11 @@ def node_data(lam: float, log_piece: bool) -> _tb.NodeData:
     s = force_end.solve(lam, rtol=RTOL)
     # the plate's end of contact, the recovery map's anchor (unused on the ln-lambda pieces)
     tau_p = np.inf if log_piece else float(solver.solve(lam, rtol=RTOL).tau_d)
-    out: _tb.NodeData = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
+    out: NodeData = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
            "log_e": np.log(s.e), "xi_over_lam": s.xi / lam, "log_F_m": np.log(s.F_m),
            "log_int_F2": np.log(s.int_F2), "log_tau_p": 0.0 if log_piece else np.log(tau_p)}
     for piece in TIME_PIECES:
-        y = sub_nodes(piece)
+        y = engine.sub_nodes(N_SUB[piece], N_TIME[piece])
         tau = time_of(piece, y, s.tau_dc, s.tau_d, tau_p, log_piece)
         h = s.history(tau.ravel())
         d = np.asarray(h["delta"], dtype=float).reshape(y.shape)
@@ -177,29 +173,20 @@ def node_data(lam: float, log_piece: bool) -> _tb.NodeData:
     return out
 
 
-def build_tables() -> _tb.Tables:
-    """All coefficients, laid out as ``table_build.build_tables``'.
+def build_tables() -> Tables:
+    """All coefficients: the engine's ``build_tables`` with this table's node function.
 
     Returns
     -------
-    table_build.Tables
+    Tables
         Summary per piece; history per (time piece, field), per lambda piece, per sub-piece one
-        [time degree, lambda degree] matrix; the history's weights.
+        [time degree, lambda degree] matrix; the history's weights; the spec.
     """
-    summary: dict[str, list[FloatArray]] = {k: [] for k in SUMMARY_KEYS}
-    history: dict[tuple[str, str], list[tuple[FloatArray, ...]]] = {
-        (p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
-    weights: dict[tuple[str, str], list[tuple[float, ...]]] = {key: [] for key in history}
-    for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:]):
-        data = [node_data(float(x), is_log_piece(a)) for x in piece_nodes(a, b)]
-        for k in SUMMARY_KEYS:
-            c = cheb_coefficients(np.array([d[k] for d in data]))
-            summary[k].append(trim_trailing(c, np.abs(c) > TRIM * np.abs(c).max()))
-        for key in history:
-            mats, wts = _tb.history_coefficients(data, key)
-            history[key].append(mats)
-            weights[key].append(wts)
-    return {"summary": summary, "history": history, "weights": weights}
+    def sample(p: int, lams: FloatArray) -> list[NodeData]:
+        return [node_data(float(x), is_log_piece(LAM_PIECES[p])) for x in lams]
+
+    return engine.build_tables(SPEC, sample, [(p, k) for p in TIME_PIECES for k in HISTORY_KEYS],
+                               _tb.HISTORY_TRIM, _tb.history_weight)
 
 
 def input_files() -> list[pathlib.Path]:
@@ -208,14 +195,14 @@ def input_files() -> list[pathlib.Path]:
     Returns
     -------
     list of pathlib.Path
-        This builder, the layout it writes and the solvers it samples.
+        This builder, the layout it writes, the solvers it samples and the table engine.
     """
     here = pathlib.Path(__file__).resolve().parent
     return [here / name for name in ("force_table_build.py", "force_table_layout.py",
-                                     "force_end.py", "solver.py", "phases.py")]
+                                     "force_end.py", "solver.py", "phases.py")] + _tb.engine_files()
 
 
-def render(tables: _tb.Tables | None = None) -> str:
+def render(tables: Tables | None = None) -> str:
     """Text of ``generated/exact_force_table.py``.
 
     Parameters
@@ -231,35 +218,43 @@ def render(tables: _tb.Tables | None = None) -> str:
     import scipy
 
     t = build_tables() if tables is None else tables
-    lines = ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads it back)",
-             *LAYOUT.assignments(), "",
-             "#: stored series -> one tuple of Chebyshev coefficients per lambda piece",
-             "SUMMARY = {"]
-    lines += _tb.table_lines(t, SUMMARY_KEYS, (
-        "#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
-        "#: [time degree][lambda degree] as the string \"rows cols values...\"",
-        "#: (table_layout.parse_array)"))
+    lines = engine.table_lines(
+        t, SPEC, ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads "
+                  "it back)", *LAYOUT.assignments()],
+        "stored series -> one tuple of Chebyshev coefficients per lambda piece",
+        ("#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
+         *_tb.HISTORY_NOTE[1:]), _tb.HISTORY_QUANTUM)
     title = ("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
              f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}.")
     provenance = (f"Built by zener_sym.exact.force_table_build from scipy {scipy.__version__} "
-                  f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym exact-table "
-                  "--check` rebuilds and compares numerically.")
-    text: str = table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
+                  f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym regen --check "
+                  "exact-force-table` rebuilds and compares numerically.")
+    text: str = table_module(title, "regen exact-force-table", provenance,
+                             inputs_hash(input_files()), lines)
     return text
 
 
 def table_path() -> pathlib.Path:
-    """Where the generated table lives.
+    """Where the generated table lives: ``generated/exact_force_table.py``."""
+    from ..codegen import generated_dir
+
+    return generated_dir() / "exact_force_table.py"
+
+
+def as_tables(t: Mapping[str, Any]) -> Tables:
+    """A table in any of its forms as the engine's ``Tables`` (``table_build.as_tables`` with
+    this table's description).
+
+    Parameters
+    ----------
+    t : mapping
+        The generated module's names, or ``{"summary": ..., "history": ...}``.
 
     Returns
     -------
-    pathlib.Path
-        ``generated/exact_force_table.py``.
+    Tables
     """
-    from ..codegen import generated_dir
-
-    path: pathlib.Path = generated_dir() / "exact_force_table.py"
-    return path
+    return _tb.as_tables(t, SPEC)
 
 
 def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
@@ -278,11 +273,6 @@ def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
     list of str
         Readable lines, one per difference (empty: they agree).
     """
-    n = sum(not is_log_piece(a) for a in LAM_PIECES[:-1])
-
-    def sqrt_pieces_only(t: Mapping[str, Any]) -> dict[str, Any]:
-        summary = dict(t["summary"])
-        summary["log_tau_p"] = tuple(summary["log_tau_p"])[:n]
-        return {**t, "summary": summary}
-
-    return _tb.compare(sqrt_pieces_only(stored), sqrt_pieces_only(fresh), CHECK_RTOL)
+    logs = [p for p, a in enumerate(LAM_PIECES[:-1]) if is_log_piece(a)]
+    return engine.compare(as_tables(stored), as_tables(fresh),
+                          _tb.HISTORY_TRIM, skip={"log_tau_p": logs})

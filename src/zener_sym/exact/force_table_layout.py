@@ -9,18 +9,17 @@ constants and writes them into ``generated/exact_force_table.py``) and the runti
 from __future__ import annotations
 
 import dataclasses
-from types import ModuleType
 
 import numpy as np
-import numpy.typing as npt
 
-from ..typing import FloatArray, RealArrayLike
+from ..numerics.cheb_table import WrittenConstants
+from ..typing import FloatArray
 
-__all__ = ["ForceLayout", "piece_variable", "recovery_z_end", "time_of"]
+__all__ = ["ForceLayout", "recovery_z_end", "time_of"]
 
 
 @dataclasses.dataclass(frozen=True)
-class ForceLayout:
+class ForceLayout(WrittenConstants):
     """The constants that fix where each coefficient of the force-end tables applies (named as
     in the generated module)."""
 
@@ -37,52 +36,6 @@ class ForceLayout:
     TIME_PIECES: tuple[str, ...] = ("C", "R")
     #: The tabulated history fields: f (delta's log-part) and v = delta'.
     HISTORY_KEYS: tuple[str, ...] = ("f", "v")
-
-    @classmethod
-    def of(cls, module: ModuleType) -> "ForceLayout":
-        """The layout written into a generated table module (its upper-case names).
-
-        Parameters
-        ----------
-        module : module
-            The generated table module (``zener_sym.generated.exact_force_table``).
-
-        Returns
-        -------
-        ForceLayout
-        """
-        return cls(**{f.name: getattr(module, f.name) for f in dataclasses.fields(cls)})
-
-    def assignments(self) -> list[str]:
-        """``NAME = value`` lines of a generated module, in field order (read back by ``of``).
-
-        Returns
-        -------
-        list of str
-            One line per field.
-        """
-        return [f"{f.name} = {getattr(self, f.name)!r}" for f in dataclasses.fields(self)]
-
-
-def piece_variable(lam: RealArrayLike,
-                   log_piece: bool | npt.NDArray[np.bool_]) -> FloatArray:
-    """The Chebyshev variable of a lambda piece: ln lambda (log pieces) or sqrt(lambda).
-
-    Parameters
-    ----------
-    lam : array_like
-        lambda (Eq. 11), >= 0.
-    log_piece : bool or ndarray of bool
-        Whether lambda lies on a ln-lambda piece (at or above LOG_FROM).
-
-    Returns
-    -------
-    ndarray
-        ln lambda or sqrt(lambda), the broadcast shape.
-    """
-    lam_a = np.asarray(lam, dtype=float)
-    with np.errstate(divide="ignore"):
-        return np.where(log_piece, np.log(np.where(log_piece, lam_a, 1.0)), np.sqrt(lam_a))
 
 
 def recovery_z_end(tau_dc: float | FloatArray, tau_d: float | FloatArray,

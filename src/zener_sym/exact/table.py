@@ -21,20 +21,22 @@ from __future__ import annotations
 
 import functools
 import importlib
-from collections.abc import Mapping, Sequence
-from typing import Any, TypedDict
+from collections.abc import Mapping
+from typing import TypedDict
 
 import numpy as np
 import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.chebyshev import cheb_to_monomial, horner_take_pair
+from ..numerics.cheb_table import Index, SummaryTable, history_tables, line_coefficients
+from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
-from .table_layout import Layout, parse_array
+from .table_layout import Layout
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
-           "history_in_range", "summary", "summary_derivative", "DERIVATIVE_FIELDS", "history"]
+           "history_in_range", "summary", "summary_derivative", "DERIVATIVE_FIELDS", "history",
+           "log_quantity"]
 
 #: LAM_MIN, LAM_MAX (the summary tables' range) and HISTORY_LAM_MAX (where the history tables
 #: end) are read from the generated table on first use (``__getattr__``): it is the one source of
@@ -47,10 +49,9 @@ HISTORY_ATOL = 1e-10
 #: Points per block of the history evaluation (``blocks.BLOCK``: a block's float temporaries,
 #: 64 kB each, stay in cache and below the allocator's mmap threshold).
 _BLOCK = BLOCK
-
-#: Lambda-piece indices (``_piece``) and row indices.
-_Index = npt.NDArray[np.intp]
-#: One time piece's history layout (``_history_layout``): per lambda piece the monomial
+#: Lambda-piece indices and row indices.
+_Index = Index
+#: One time piece's history (``cheb_table.history_rows``): per lambda piece the monomial
 #: coefficients [time degree, lambda degree, 2 * sub-piece + field] (None without the piece),
 #: the sub-piece count, the time degree and per lambda piece the degree its coefficients need.
 _PieceLayout = tuple[list[FloatArray | None], int, int, npt.NDArray[np.int_]]
@@ -63,119 +64,27 @@ class _Tables(TypedDict):
     """The generated table, arranged for evaluation (``_tables``)."""
 
     layout: Layout
-    LAM_MIN: float
-    LAM_MAX: float
+    summary: SummaryTable
     HISTORY_LAM_MAX: float
-    edges: FloatArray
-    log: npt.NDArray[np.bool_]
-    ga: FloatArray
-    gb: FloatArray
-    summary_keys: tuple[str, ...]
-    summary: FloatArray
     history: dict[str, _PieceLayout]
-
-
-def _stack_summary(mats: Sequence[FloatArray]) -> FloatArray:
-    """One zero-padded array [lambda piece, field, degree] (trimming varies)."""
-    out = np.zeros((len(mats), max(c.shape[0] for c in mats), max(c.shape[1] for c in mats)))
-    for i, c in enumerate(mats):
-        out[i, : c.shape[0], : c.shape[1]] = c
-    return out
-
-
-def _stack(pieces: Sequence[Sequence[str | RealArrayLike]]) -> FloatArray:
-    """One zero-padded array [lambda piece, sub-piece, time degree, lambda degree] (trimming
-    varies)."""
-    mats = [[parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float)
-             for c in subs] for subs in pieces]
-    flat = [c for subs in mats for c in subs]
-    out = np.zeros((len(mats), max(len(subs) for subs in mats), max(c.shape[0] for c in flat),
-                    max(c.shape[1] for c in flat)))
-    for i, subs in enumerate(mats):
-        for j, c in enumerate(subs):
-            out[i, j, : c.shape[0], : c.shape[1]] = c
-    return out
-
-
-def _pad_rows(rows: Sequence[Sequence[float]]) -> FloatArray:
-    """Zero-padded 2-D array from 1-D coefficient tuples of different lengths."""
-    out = np.zeros((len(rows), max(len(r) for r in rows)))
-    for i, r in enumerate(rows):
-        out[i, : len(r)] = r
-    return out
 
 
 @functools.cache
 def _tables() -> _Tables:
     """The generated table, loaded on first use (importing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
-    layout = Layout.of(t)
-    edges = np.asarray(t.LAM_PIECES, dtype=float)
-    log = edges[:-1] >= t.LOG_FROM
-    # per piece: the Chebyshev variable's ends (lambda, or ln lambda on the large pieces)
-    with np.errstate(divide="ignore"):
-        ga = np.where(log, np.log(np.where(log, edges[:-1], 1.0)), edges[:-1])
-        gb = np.where(log, np.log(edges[1:]), edges[1:])
-    return {"layout": layout, "LAM_MIN": float(edges[0]), "LAM_MAX": float(edges[-1]),
-            "HISTORY_LAM_MAX": float(layout.HISTORY_TO), "edges": edges, "log": log, "ga": ga,
-            "gb": gb,
-            "summary_keys": tuple(t.SUMMARY),
-            # [lambda piece, field, degree], zero-padded: all fields in one pass
-            "summary": _stack_summary([_pad_rows([v[p] for v in t.SUMMARY.values()])
-                               for p in range(len(t.LAM_PIECES) - 1)]),
-            "history": _history_layout(t.HISTORY, log, layout)}
+    layout = Layout.of(t)  # the time pieces and maps; the lambda pieces are in TABLE_*
+    return {"layout": layout, "HISTORY_LAM_MAX": float(layout.HISTORY_TO),
+            "summary": SummaryTable.of(t, "exact table", "; integrate instead (backend='scipy')"),
+            "history": history_tables(t.HISTORY, layout.TIME_PIECES, layout.HISTORY_KEYS)}
 
 
 def __getattr__(name: str) -> float:
     if name in _RANGE:
         t = _tables()
-        return {"LAM_MIN": t["LAM_MIN"], "LAM_MAX": t["LAM_MAX"],
-                "HISTORY_LAM_MAX": t["HISTORY_LAM_MAX"]}[name]
+        s = t["summary"]
+        return {"LAM_MIN": s.lo, "LAM_MAX": s.hi, "HISTORY_LAM_MAX": t["HISTORY_LAM_MAX"]}[name]
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def _history_layout(history: Mapping[tuple[str, str], Any], log: npt.NDArray[np.bool_],
-                    lay: Layout) -> dict[str, _PieceLayout]:
-    """The history coefficients arranged for ``history``: per time piece and lambda piece one
-    array [time degree, lambda degree, 2 * sub-piece + field] (field 0: f, 1: I; zero-padded to
-    the time piece's largest degree), so the lambda contraction gives per line the pairs
-    (f_j, I_j) next to each other, read as one complex128 per sub-piece by
-    ``horner_take_pair``. The time direction is converted from Chebyshev to monomial
-    coefficients in the sub-piece's x (so the evaluation is Horner's rule, three passes over
-    the points per degree instead of Clenshaw's four; on a sub-piece the coefficients fall
-    fast, so the conversion loses no digits that matter, tested against the Chebyshev sum in
-    tests/test_exact_fast.py)."""
-    n_lam = len(log)
-    layout: dict[str, _PieceLayout] = {}
-    for piece in lay.TIME_PIECES:
-        st = {k: _stack(history[(piece, k)]) for k in lay.HISTORY_KEYS}  # [lp, sub, j, k]
-        deg = max(a.shape[2] for a in st.values())
-        n_sub = lay.N_SUB[piece]
-        conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
-        fields: list[FloatArray] = []
-        for k in lay.HISTORY_KEYS:
-            a = np.zeros((n_lam, n_sub, deg, max(x.shape[3] for x in st.values())))
-            a[: st[k].shape[0], : st[k].shape[1], : st[k].shape[2], : st[k].shape[3]] = st[k]
-            fields.append(np.einsum("ij,psjk->psik", conv, a))
-        blk = np.stack(fields, axis=2)  # [lp, sub, field, deg, k]
-        # per lambda piece [time degree, lambda degree, sub-piece * 2 + field], trimmed in
-        # lambda degree; None where the piece has no coefficients (piece M below LOG_FROM)
-        per: list[FloatArray | None] = []
-        for p in range(n_lam):
-            if not len(history[(piece, "f")][p]):
-                per.append(None)
-                continue
-            b = blk[p]  # [sub, field, j, k]
-            nz = np.flatnonzero(np.any(b != 0.0, axis=(0, 1, 2)))
-            n_k = int(nz.max()) + 1 if nz.size else 1
-            per.append(np.ascontiguousarray(
-                b[..., :n_k].transpose(2, 3, 0, 1).reshape(deg, n_k, 2 * n_sub)))
-        # per lambda piece, the degree its trimmed coefficients need (Horner starts there)
-        need = np.array([max([int(c.split(" ", 1)[0]) if isinstance(c, str) else np.shape(c)[0]
-                              for k in lay.HISTORY_KEYS for c in history[(piece, k)][p]]
-                             or [1]) for p in range(n_lam)])
-        layout[piece] = (per, n_sub, deg, need)
-    return layout
 
 
 def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
@@ -191,9 +100,7 @@ def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
     ndarray of bool
         lam's shape.
     """
-    lam_a = np.asarray(lam, dtype=float)
-    t = _tables()
-    return (lam_a >= t["LAM_MIN"]) & (lam_a <= t["LAM_MAX"])
+    return _tables()["summary"].in_range(lam)
 
 
 def history_in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
@@ -209,44 +116,16 @@ def history_in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
     ndarray of bool
         lam's shape.
     """
-    lam_a = np.asarray(lam, dtype=float)
     t = _tables()
-    return (lam_a >= t["LAM_MIN"]) & (lam_a <= t["HISTORY_LAM_MAX"])
-
-
-def _piece(lam: FloatArray, history: bool = False) -> tuple[_Index, FloatArray]:
-    """Lambda piece index and the local Chebyshev variable x in [-1, 1] (``history``: among the
-    pieces that carry a history table, so lambda = HISTORY_LAM_MAX is the end of the last)."""
-    if not np.all(in_range(lam)):
-        bad = float(lam[~in_range(lam)].ravel()[0])
-        raise ValueError(f"lambda = {bad!r} is outside the exact table's range "
-                         f"[{_tables()['LAM_MIN']:g}, {_tables()['LAM_MAX']:g}]; integrate "
-                         "instead (backend='scipy')")
-    t = _tables()
-    edges = t["edges"]
-    last = (int(np.count_nonzero(edges[1:] <= t["HISTORY_LAM_MAX"])) - 1 if history
-            else len(edges) - 2)
-    i = np.clip(np.searchsorted(edges, lam, side="right") - 1, 0, last)
-    log = t["log"][i]
-    with np.errstate(divide="ignore"):
-        g = np.where(log, np.log(np.where(log, lam, 1.0)), lam)
-    a, b = t["ga"][i], t["gb"][i]
-    return i, np.clip((2.0 * g - a - b) / (b - a), -1.0, 1.0)
+    return t["summary"].in_range(lam, t["HISTORY_LAM_MAX"])
 
 
 def _core(lam: FloatArray,
           history: bool = False) -> tuple[dict[str, FloatArray], _Index, FloatArray]:
-    i, x = _piece(lam, history)
+    """The stored series at lam (1-D) and the derived tau_d, e, tau_w0; piece index and x
+    (``history``: among the pieces with a history table)."""
     t = _tables()
-    c = t["summary"]
-    tl = np.polynomial.chebyshev.chebvander(x, c.shape[2] - 1)  # [lambda, degree]
-    # a plain sum in a fixed order: each lambda's value does not depend on how many others are
-    # evaluated with it (einsum's blocking did, by an ulp), so summary and history agree on tau_d
-    ci = c[i]
-    vals = tl[:, :1] * ci[:, :, 0]
-    for k in range(1, tl.shape[1]):
-        vals += tl[:, k:k + 1] * ci[:, :, k]
-    v = dict(zip(t["summary_keys"], vals.T))
+    v, i, x, _ = t["summary"].values(lam, t["HISTORY_LAM_MAX"] if history else None)
     v["tau_d"] = np.exp(v["log_tau_d"])
     v["e"] = _solver.restitution(2.0 * lam * v["int_F2"], np.exp(v["log_e"]))
     v["tau_w0"] = v["tau_dc"] + lam * v["rest_over_lam"]
@@ -287,25 +166,6 @@ def summary(lam: RealArrayLike) -> dict[str, FloatArray]:
 #: Summary fields :func:`summary_derivative` differentiates.
 DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
                      "int_F2", "xi")
-
-
-@functools.cache
-def _derivative_coefficients() -> FloatArray:
-    """d/dx of every stored summary series, [lambda piece, field, degree] (``chebder``: exact
-    on the stored coefficients, no new rounding beyond the recurrence's)."""
-    c = _tables()["summary"]
-    if c.shape[2] <= 1:
-        return np.zeros_like(c)
-    # numpy's stubs type chebder's result as any floating array; it is float64 (no copy)
-    return np.asarray(np.polynomial.chebyshev.chebder(c, axis=2), dtype=float)
-
-
-def _series_sum(tl: FloatArray, ci: FloatArray) -> FloatArray:
-    """sum_k tl[:, k] ci[:, :, k] in a fixed order (as ``_core``)."""
-    vals = tl[:, :1] * ci[:, :, 0]
-    for k in range(1, min(tl.shape[1], ci.shape[2])):
-        vals += tl[:, k:k + 1] * ci[:, :, k]
-    return vals
 
 
 def summary_derivative(lam: RealArrayLike, field: str = "e",
@@ -356,15 +216,7 @@ def summary_derivative(lam: RealArrayLike, field: str = "e",
     if not np.all(np.isfinite(lam1)):
         raise ValueError("lambda must be finite")
     v, i, x = _core(lam1)
-    t = _tables()
-    d = _derivative_coefficients()
-    tl = np.asarray(np.polynomial.chebyshev.chebvander(x, max(d.shape[2] - 1, 0)), dtype=float)
-    dx = dict(zip(t["summary_keys"], _series_sum(tl, d[i]).T))
-    width = t["gb"][i] - t["ga"][i]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        # dx/dlambda of the piece's variable (lambda, or ln lambda on the log pieces)
-        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam1 > 0, lam1, 1.0)), 2.0 / width)
-    dv = {k: dx[k] * scale for k in dx}  # d(stored series)/d(lambda)
+    dv = _tables()["summary"].derivatives(lam1, i, x)  # d(stored series)/d(lambda)
     dv["tau_d"] = v["tau_d"] * dv["log_tau_d"]
     xi = 2.0 * lam1 * v["int_F2"]
     small = xi < 0.5
@@ -390,23 +242,6 @@ def summary_derivative(lam: RealArrayLike, field: str = "e",
     return out.reshape(lam_in.shape)
 
 
-def _one_series(lam: FloatArray, key: str) -> tuple[FloatArray, FloatArray]:
-    """One stored summary series and its d/dlambda at lam (1-D): only that series is summed
-    (the inverse's Newton steps need one or two of the six)."""
-    t = _tables()
-    k = t["summary_keys"].index(key)
-    i, x = _piece(lam)
-    c = t["summary"][:, k, :]
-    d = _derivative_coefficients()[:, k, :]
-    tl = np.polynomial.chebyshev.chebvander(x, c.shape[1] - 1)
-    val = np.einsum("nk,nk->n", tl, c[i])
-    der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i, : tl.shape[1]])
-    width = t["gb"][i] - t["ga"][i]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        scale = np.where(t["log"][i], 2.0 / (width * np.where(lam > 0, lam, 1.0)), 2.0 / width)
-    return val, der * scale
-
-
 def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
     """(ln q, d ln q / d lambda) from the one series q needs, for :mod:`zener_sym.exact.inverse`.
 
@@ -429,33 +264,15 @@ def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatAr
         For an unknown quantity or lambda outside the table's range.
     """
     lam1 = np.asarray(lam, dtype=float).reshape(-1)
+    one = _tables()["summary"].one
     if quantity == "e":
-        return _one_series(lam1, "log_e")
+        return one(lam1, "log_e")
     if quantity == "tau_d":
-        return _one_series(lam1, "log_tau_d")
+        return one(lam1, "log_tau_d")
     if quantity == "xi":
-        f, df = _one_series(lam1, "int_F2")
+        f, df = one(lam1, "int_F2")
         return np.log(2.0 * lam1 * f), 1.0 / lam1 + df / f
     raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
-
-
-def _piece_coefficients(per: Sequence[FloatArray | None], ip: _Index, tl_all: FloatArray,
-                        deg: int, n_sub: int) -> npt.NDArray[np.complex128]:
-    """[time degree, line * sub-piece], complex: one time piece's monomial coefficients per line
-    (real part f's, imaginary part I's), sum_k C[j, k, 2 s + field] T_k(x_lambda). lu is sorted,
-    so each lambda piece's lines are one slice; one stacked matrix product per lambda piece
-    present."""
-    out = np.zeros((deg, len(ip), 2 * n_sub))
-    for p in np.unique(ip):
-        c = per[int(p)]
-        if c is None:
-            continue
-        a, b = np.searchsorted(ip, p), np.searchsorted(ip, p, side="right")
-        tl = tl_all[a:b, : c.shape[1]]  # T_k(x_lambda), [lambda, k]
-        # one small matrix product per time degree (a stack of them): lambda x k times
-        # k x (sub-piece, field), written straight into the [degree, lambda, ...] layout
-        np.matmul(tl, c, out=out[:, a:b])
-    return out.reshape(deg, -1).view(np.complex128)
 
 
 def _scaled_maps(name: str, k: int, lu: FloatArray, log: npt.NDArray[np.bool_],
@@ -575,14 +392,10 @@ def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
         n_col = lam_a.shape[-1]
     else:
         lu, inv = np.unique(lam_a.ravel(), return_inverse=True)
-    if not np.all(history_in_range(lu)):
-        bad = float(lu[~history_in_range(lu)][0])
-        raise ValueError(f"lambda = {bad!r} is outside the exact history table's range "
-                         f"[{_tables()['LAM_MIN']:g}, {_tables()['HISTORY_LAM_MAX']:g}]; "
-                         "integrate instead (backend='scipy')")
+    _tables()["summary"].check(lu, _tables()["HISTORY_LAM_MAX"], "exact history table")
     tau_f = tau_a.ravel()
     v, ip, xl = _core(lu, history=True)
-    log = _tables()["log"][ip]
+    log = _tables()["summary"].pieces.kind["log"][ip]
     lay = _tables()["layout"]
     tau_s = lay.split_time(lu, log, v["tau_dc"], v["tau_w0"])
     piece = _time_piece(tau_f, (tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"]),
@@ -598,7 +411,7 @@ def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
             if not np.any(piece == n):
                 continue
             per, k, deg, need = layout[name]
-            prep = (_scaled_maps(name, k, lu, log, v, tau_s), _piece_coefficients(
+            prep = (_scaled_maps(name, k, lu, log, v, tau_s), line_coefficients(
                 per, ip, tl_all, deg, k), k, int(need[ip].max()))
         # the piece's points, found chunk by chunk of the grid (no index array of the grid's
         # size: the call's peak memory decides whether glibc keeps it for the next call)

@@ -45,47 +45,41 @@ tau_U = t_U + (LAM_U / lambda)(tau - tau_M). The build stays cheap: one long sol
 one per node. History samples in the stiff tau-phases are integrated afresh from the solver's
 accepted steps (``_from_steps``), not read off its dense output.
 
+The table is a configuration of the package's one Chebyshev-table engine
+(:mod:`zener_sym.numerics.cheb_table_build`): ``SPEC`` describes its lambda pieces, and this module
+gives the node function (the solves above) and the history's weights.
+
 The node values come from a floating-point integrator, so the text is not bit-reproducible across
-machines: the table is NOT in ``codegen.BUILDERS``; ``zener-sym exact-table --check`` rebuilds it
-and compares numerically (see ``CHECK_RTOL``).
+machines: the table is NOT in ``codegen.BUILDERS``; ``zener-sym regen --check exact-table``
+rebuilds it and compares numerically (see ``CHECK_RTOL``).
 """
 from __future__ import annotations
 
 import functools
 import pathlib
 from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any, TypedDict
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..codegen import inputs_hash
-from ..codegen.tables import float_tuple, table_module
-from ..numerics.chebyshev import (cheb_coefficients, cheb_nodes, coefficient_difference,
-                                  trim_trailing)
+from ..codegen.tables import table_module
+from ..numerics import cheb_table_build as engine
+from ..numerics.cheb_table import TableSpec
+from ..numerics.cheb_table_build import NodeData, Tables
+from ..numerics.chebyshev import cheb_nodes  # noqa: F401 - tests place points between the nodes
 from ..typing import FloatArray, RealArrayLike
-from .table_layout import Layout, lin_log, parse_array
+from .table_layout import Layout, lin_log
 
 if TYPE_CHECKING:  # the solver is imported where a table is built (scipy stays unloaded till then)
     from .phases import Leg
     from .solver import ExactSolution
 
-#: One lambda node's data: summary values by name, and per (time piece, field) the history
-#: samples [sub-piece, point] (with (piece, "delta") the sub-pieces' largest delta).
-NodeData = dict[str | tuple[str, str], Any]
+__all__ = ["SPEC", "LAYOUT", "NodeData", "Tables", "build_tables", "render", "compare",
+           "input_files", "table_path", "history_weight"]
+
 #: (delta, w) of a solution at an array of times.
 HistoryFunction = Callable[[FloatArray], tuple[FloatArray, FloatArray]]
-
-
-class Tables(TypedDict):
-    """What ``build_tables`` returns (and ``render`` writes)."""
-
-    #: key -> per lambda piece one 1-D Chebyshev series
-    summary: dict[str, list[FloatArray]]
-    #: (time piece, field) -> per lambda piece one [time degree, lambda degree] matrix per
-    #: sub-piece (an empty tuple where the piece has no such time piece)
-    history: dict[tuple[str, str], list[tuple[FloatArray, ...]]]
-    #: the same keys: per lambda piece the sub-pieces' weights
-    weights: dict[tuple[str, str], list[tuple[float, ...]]]
 
 #: Breakpoints of the lambda pieces: the summary and history tables cover [0, 1000].
 LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0, 1000.0)
@@ -139,12 +133,23 @@ HISTORY_QUANTUM = 1e-15
 CHECK_RTOL = 1e-10
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest_over_lam")
+#: The comment above the history in the generated table.
+HISTORY_NOTE = (
+    "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
+    "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
+    "#: (zener_sym.numerics.cheb_table.parse_array)")
 #: The layout the runtime reads back from the generated table (``table_layout.Layout.of``).
 LAYOUT = Layout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, HISTORY_TO=HISTORY_TO,
                 C_STRETCH=C_STRETCH, C_END=C_END, S_ORBIT=S_ORBIT, S_TRANSIENT=S_TRANSIENT,
                 N_SUB=N_SUB)
 HISTORY_KEYS = LAYOUT.HISTORY_KEYS
 TIME_PIECES = LAYOUT.TIME_PIECES
+#: The table's description for the engine: lambda pieces (in lambda below LOG_FROM, in ln lambda
+#: above), the stored series, points per piece, trimming and ``--check`` tolerance.
+SPEC = TableSpec(pieces=tuple(("log" if a >= LOG_FROM else "lam", a, b)
+                              for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:])),
+                 fields=SUMMARY_KEYS, nodes=(N_LAM,) * (len(LAM_PIECES) - 1), trim=TRIM,
+                 check_rtol=CHECK_RTOL, digits=15)
 
 
 def time_nodes(piece: str, y: FloatArray, tau_dc: float, tau_w0: float, tau_d: float,
@@ -206,8 +211,7 @@ def sub_nodes(piece: str) -> FloatArray:
     ndarray
         [sub-piece, point].
     """
-    k, x = N_SUB[piece], cheb_nodes(N_TIME[piece])
-    return (np.arange(k)[:, None] + (x[None, :] + 1.0) / 2.0) / k
+    return engine.sub_nodes(N_SUB[piece], N_TIME[piece])
 
 
 def _rest_time(sol: ExactSolution) -> float:
@@ -381,11 +385,7 @@ def piece_nodes(a: float, b: float) -> FloatArray:
     ndarray
         N_LAM nodes.
     """
-    x = cheb_nodes(N_LAM)
-    if is_log_piece(a):
-        nodes: FloatArray = np.exp(np.log(a) + (np.log(b) - np.log(a)) * (x + 1.0) / 2.0)
-        return nodes
-    return a + (b - a) * (x + 1.0) / 2.0
+    return engine.piece_nodes("log" if is_log_piece(a) else "lam", a, b, N_LAM)
 
 
 def _history_samples(hist: HistoryFunction, tau_dc: float, tau_w0: float, tau_d: float,
@@ -439,8 +439,32 @@ def node_data(lam: float) -> NodeData:
     return out
 
 
+def history_weight(data: Sequence[NodeData], key: tuple[str, str]) -> FloatArray:
+    """Per sub-piece, the scale a history coefficient of ``key`` moves its field by: a
+    coefficient c of f moves delta by c delta, so it is weighed by the sub-piece's largest
+    delta / delta_m over the piece's nodes; the other field is absolute (weight 1). Shared by
+    the plate's and the force-free end's tables.
+
+    Parameters
+    ----------
+    data : sequence of dict
+        The lambda piece's node data (``NodeData``).
+    key : tuple of str
+        (time piece, field).
+
+    Returns
+    -------
+    ndarray
+        One weight per sub-piece.
+    """
+    if key[1] == "f":
+        wt: FloatArray = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
+        return wt
+    return np.ones(np.shape(data[0][key])[0])
+
+
 def build_tables() -> Tables:
-    """All coefficients: {"summary": {key: [1-D per lambda piece]}, "history": {(piece, key): [2-D]}}.
+    """All coefficients: the engine's ``build_tables`` with this table's node function.
 
     history[(piece, key)] holds, per lambda piece up to HISTORY_TO, one 2-D array per sub-piece
     indexed [time degree, lambda degree].
@@ -448,63 +472,16 @@ def build_tables() -> Tables:
     Returns
     -------
     Tables
-        summary, history and the history's weights.
+        summary, history, the history's weights and the spec.
     """
-    summary: dict[str, list[FloatArray]] = {k: [] for k in SUMMARY_KEYS}
-    history: dict[tuple[str, str], list[tuple[FloatArray, ...]]] = {
-        (p, k): [] for p in TIME_PIECES for k in HISTORY_KEYS}
-    # per lambda piece, per sub-piece
-    weights: dict[tuple[str, str], list[tuple[float, ...]]] = {key: [] for key in history}
-    for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:]):
-        lams = piece_nodes(a, b)
+    def sample(p: int, lams: FloatArray) -> list[NodeData]:
+        a, b = LAM_PIECES[p], LAM_PIECES[p + 1]
         if is_log_piece(a):
-            data = [large_node(float(x), history=b <= HISTORY_TO) for x in lams]
-        else:
-            data = [node_data(float(x)) for x in lams]
-        for k in SUMMARY_KEYS:
-            c = cheb_coefficients(np.array([d[k] for d in data]))
-            summary[k].append(trim_trailing(c, np.abs(c) > TRIM * np.abs(c).max()))
-        if b > HISTORY_TO:
-            continue
-        for key in history:
-            if key not in data[0]:  # piece M below LOG_FROM
-                history[key].append(())
-                weights[key].append(())
-                continue
-            mats, wts = history_coefficients(data, key)
-            history[key].append(mats)
-            weights[key].append(wts)
-    return {"summary": summary, "history": history, "weights": weights}
+            return [large_node(float(x), history=b <= HISTORY_TO) for x in lams]
+        return [node_data(float(x)) for x in lams]
 
-
-def history_coefficients(data: Sequence[NodeData], key: tuple[str, str]
-                         ) -> tuple[tuple[FloatArray, ...], tuple[float, ...]]:
-    """One lambda piece's history series of ``key`` = (time piece, field) from its node data.
-
-    Shared by the plate's and the force-free end's tables.
-
-    Parameters
-    ----------
-    data : sequence of dict
-        The piece's node data (``NodeData``), one per lambda node.
-    key : tuple of str
-        (time piece, field).
-
-    Returns
-    -------
-    tuple
-        Per sub-piece one [time degree, lambda degree] Chebyshev matrix, trimmed where it moves
-        the field by less than HISTORY_TRIM, and the sub-pieces' weights.
-    """
-    vals = np.array([d[key] for d in data])  # [lambda node, sub, time node]
-    c = cheb_coefficients(cheb_coefficients(vals, axis=2), axis=0)
-    if key[1] == "f":  # c moves delta by c delta: weighed by delta / delta_m
-        wt: FloatArray = np.max([d[(key[0], "delta")] / d["delta_m"] for d in data], axis=0)
-    else:
-        wt = np.ones(c.shape[1])
-    mats = tuple(trim_trailing(c[:, j, :].T, np.abs(c[:, j, :].T) * wt[j] > HISTORY_TRIM)
-                 for j in range(c.shape[1]))
-    return mats, tuple(float(x) for x in wt)
+    return engine.build_tables(SPEC, sample, [(p, k) for p in TIME_PIECES for k in HISTORY_KEYS],
+                               HISTORY_TRIM, history_weight)
 
 
 def input_files() -> list[pathlib.Path]:
@@ -513,73 +490,24 @@ def input_files() -> list[pathlib.Path]:
     Returns
     -------
     list of pathlib.Path
-        This builder, the layout it writes and the solver it samples (with its phase driver).
+        This builder, the layout it writes, the solver it samples (with its phase driver) and
+        the table engine.
     """
     here = pathlib.Path(__file__).resolve().parent
     return [here / name for name in ("table_build.py", "table_layout.py", "solver.py",
-                                     "phases.py")]
+                                     "phases.py")] + engine_files()
 
 
-def _fmt_q(a: FloatArray, quantum: float) -> str:
-    """A 2-D array as the string "rows cols v v ...", each number with the digits that resolve
-    ``quantum`` (at most 16). A string rather than a tuple literal: Python compiles a module of
-    80 000 float literals in about a second (every process, where bytecode is not cached),
-    numpy parses the strings in milliseconds (``parse_array``)."""
-    def one(value: float) -> str:
-        v = float(value)
-        if abs(v) < quantum:
-            return "0"
-        n = int(np.clip(np.floor(np.log10(abs(v))) - np.floor(np.log10(quantum)) + 1, 1, 16))
-        return f"{v:.{n}g}"
-
-    return f"{a.shape[0]} {a.shape[1]} " + " ".join(one(v) for v in a.ravel())
-
-
-def _fmt(a: FloatArray, indent: str) -> str:
-    if a.ndim == 1:
-        text: str = float_tuple(a, 15)
-        return text
-    rows = [indent + "    " + _fmt(r, "") + "," for r in a]
-    return "(\n" + "\n".join(rows) + "\n" + indent + ")"
-
-
-def table_lines(t: Mapping[str, Any], summary_keys: Sequence[str],
-                history_comment: Sequence[str]) -> list[str]:
-    """The SUMMARY and HISTORY assignments of a generated exact table.
-
-    Shared by the plate's and the force-free end's: summary series per lambda piece, history
-    matrices per lambda piece and sub-piece, quantised by their weights.
-
-    Parameters
-    ----------
-    t : mapping
-        The tables (``Tables``: summary, history, weights).
-    summary_keys : sequence of str
-        The summary series, in order.
-    history_comment : sequence of str
-        Comment lines written before HISTORY.
+def engine_files() -> list[pathlib.Path]:
+    """The table engine's sources (its fitting, trimming and text), inputs of every table.
 
     Returns
     -------
-    list of str
-        The lines, from the SUMMARY entries to HISTORY's closing brace.
+    list of pathlib.Path
+        ``numerics/cheb_table.py`` and ``numerics/cheb_table_build.py``.
     """
-    lines = []
-    for k in summary_keys:
-        lines.append(f"    {k!r}: (")
-        for c in t["summary"][k]:
-            lines.append("        " + _fmt(c, "        ") + ",")
-        lines.append("    ),")
-    lines += ["}", "", *history_comment, "HISTORY = {"]
-    for key in sorted(t["history"]):
-        lines.append(f"    {key!r}: (")
-        for subs, wts in zip(t["history"][key], t["weights"][key]):
-            lines.append("        (")
-            for c, wt in zip(subs, wts):
-                lines.append(f"            {_fmt_q(c, HISTORY_QUANTUM / wt)!r},")
-            lines.append("        ),")
-        lines.append("    ),")
-    return lines + ["}"]
+    numerics = pathlib.Path(engine.__file__).resolve().parent
+    return [numerics / "cheb_table.py", numerics / "cheb_table_build.py"]
 
 
 def render(tables: Tables | None = None) -> str:
@@ -588,7 +516,8 @@ def render(tables: Tables | None = None) -> str:
     Parameters
     ----------
     tables : Tables, optional
-        Built tables (``build_tables``, which is called without them).
+        Built tables (``build_tables``, which is called without them), or the committed ones
+        (``numerics.cheb_table_build.stored_tables``: re-rendered with their own numbers).
 
     Returns
     -------
@@ -598,90 +527,72 @@ def render(tables: Tables | None = None) -> str:
     import scipy
 
     t = build_tables() if tables is None else tables
-    lines = ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
-             *LAYOUT.assignments(), "",
-             "#: field -> one tuple of Chebyshev coefficients per lambda piece",
-             "SUMMARY = {"]
-    lines += table_lines(t, SUMMARY_KEYS, (
-        "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
-        "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
-        "#: (table_layout.parse_array)"))
+    lines = engine.table_lines(
+        t, SPEC, ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
+                  *LAYOUT.assignments()],
+        "field -> one tuple of Chebyshev coefficients per lambda piece", HISTORY_NOTE,
+        HISTORY_QUANTUM)
     title = ("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
              f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}.")
     provenance = (f"Built by zener_sym.exact.table_build from scipy {scipy.__version__} solves at "
-                  f"rtol {RTOL:g}; `zener-sym exact-table --check` rebuilds and compares "
+                  f"rtol {RTOL:g}; `zener-sym regen --check exact-table` rebuilds and compares "
                   "numerically (the node values come from a floating-point integrator, so the "
                   "bytes are not reproducible across machines).")
-    text: str = table_module(title, "exact-table", provenance, inputs_hash(input_files()), lines)
+    text: str = table_module(title, "regen exact-table", provenance, inputs_hash(input_files()),
+                             lines)
     return text
 
 
 def table_path() -> pathlib.Path:
-    """Where the generated table lives.
+    """Where the generated table lives: ``generated/exact_table.py``."""
+    from ..codegen import generated_dir
+
+    return generated_dir() / "exact_table.py"
+
+
+def as_tables(t: Mapping[str, Any], spec: TableSpec = SPEC) -> Tables:
+    """A table in any of its forms as the engine's ``Tables``: the generated module's names
+    (SUMMARY, HISTORY and its TABLE_* description), or ``{"summary": ..., "history": ...}``
+    (strings or bare arrays, weights optional), with ``spec`` where it has no description.
+
+    Parameters
+    ----------
+    t : mapping
+        The table.
+    spec : TableSpec
+        The description to assume.
 
     Returns
     -------
-    pathlib.Path
-        ``generated/exact_table.py``.
+    Tables
     """
-    from ..codegen import generated_dir
+    if "SUMMARY" in t:
+        if "TABLE_PIECES" in t:
+            return engine.stored_tables(t)
+        t = {"summary": t["SUMMARY"], "history": t["HISTORY"]}
+    out: Tables = {"spec": t.get("spec", spec), "summary": dict(t["summary"]),
+                   "history": dict(t["history"])}
+    if "weights" in t:
+        out["weights"] = t["weights"]
+    return out
 
-    path: pathlib.Path = generated_dir() / "exact_table.py"
-    return path
 
-
-def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any],
-            rtol: float = CHECK_RTOL) -> list[str]:
-    """Differences beyond ``rtol`` (default CHECK_RTOL) between two tables.
+def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
+    """Differences beyond CHECK_RTOL between two tables (the engine's ``compare``; a history
+    change that moves its field by less than HISTORY_TRIM of its scale, the trimming and
+    rounding level, passes too).
 
     Parameters
     ----------
     stored : mapping
         The generated module's SUMMARY and HISTORY (history as strings), as "summary" and
-        "history".
+        "history" (or ``stored_tables``' form).
     fresh : mapping
         Rebuilt tables (``Tables``).
-    rtol : float
-        Largest coefficient difference, relative to its array's largest coefficient.
 
     Returns
     -------
     list of str
         Readable lines, one per difference (empty: they agree).
     """
-    bad = []
-
-    def flat(arrays: Sequence[Any]) -> list[FloatArray]:
-        # summary: one array per lambda piece; history: one per (piece, sub-piece)
-        out: list[FloatArray] = []
-        for c in arrays:
-            if isinstance(c, tuple) and not c:  # no piece M below LOG_FROM
-                continue
-            if isinstance(c, tuple) and isinstance(c[0], str):
-                out.extend(parse_array(x) for x in c)
-            elif isinstance(c, tuple) and not np.isscalar(c[0]) and np.ndim(c[0]) == 2:
-                out.extend(c)
-            else:
-                out.append(c)
-        return out
-
-    def flat_w(weights: Sequence[Sequence[float]]) -> list[float]:
-        return [w for subs in weights for w in subs]
-
-    for kind in ("summary", "history"):
-        for key in fresh[kind]:
-            new, old = flat(fresh[kind][key]), flat(stored[kind][key])
-            quanta = ([HISTORY_QUANTUM / w for w in flat_w(fresh["weights"][key])]
-                      if kind == "history" and "weights" in fresh else [0.0] * len(new))
-            if len(new) != len(old):
-                bad.append(f"{kind} {key}: {len(new)} arrays, the stored table has {len(old)}")
-                continue
-            for i, (c_new, c_old, q) in enumerate(zip(new, old, quanta)):
-                # history: a change that moves the field by less than HISTORY_TRIM of its scale
-                # (the trimming and rounding level) passes too
-                floor = q * HISTORY_TRIM / HISTORY_QUANTUM
-                err = coefficient_difference(c_new, c_old, floor / rtol)
-                if not err <= rtol:
-                    bad.append(f"{kind} {key} array {i}: relative difference {err:.2e} "
-                               f"> {rtol:g}")
-    return bad
+    return engine.compare(as_tables(stored), as_tables(fresh), HISTORY_TRIM)

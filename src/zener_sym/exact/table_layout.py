@@ -9,18 +9,18 @@ imports the builder. The time pieces and their maps are described in the builder
 from __future__ import annotations
 
 import dataclasses
-from types import ModuleType
 
 import numpy as np
 import numpy.typing as npt
 
+from ..numerics.cheb_table import WrittenConstants, parse_array
 from ..typing import FloatArray, RealArrayLike
 
-__all__ = ["Layout", "lin_log", "parse_array"]
+__all__ = ["Layout", "lin_log", "parse_array"]  # parse_array: the engine's, named here too
 
 
 @dataclasses.dataclass(frozen=True)
-class Layout:
+class Layout(WrittenConstants):
     """The constants that fix where each coefficient of the exact tables applies.
 
     Field names are the names the generated table module uses for them.
@@ -45,31 +45,6 @@ class Layout:
     TIME_PIECES: tuple[str, ...] = ("C", "A", "M", "B")
     #: The tabulated history fields: f (delta's log-part) and the impulse I.
     HISTORY_KEYS: tuple[str, ...] = ("f", "I")
-
-    @classmethod
-    def of(cls, module: ModuleType) -> "Layout":
-        """The layout written into a generated table module (its upper-case names).
-
-        Parameters
-        ----------
-        module : module
-            The generated table module (``zener_sym.generated.exact_table``).
-
-        Returns
-        -------
-        Layout
-        """
-        return cls(**{f.name: getattr(module, f.name) for f in dataclasses.fields(cls)})
-
-    def assignments(self) -> list[str]:
-        """``NAME = value`` lines of a generated module, in field order (read back by ``of``).
-
-        Returns
-        -------
-        list of str
-            One line per field.
-        """
-        return [f"{f.name} = {getattr(self, f.name)!r}" for f in dataclasses.fields(self)]
 
     def split_time(self, lam: RealArrayLike, log_piece: bool | npt.NDArray[np.bool_],
                    tau_dc: float | FloatArray, tau_w0: float | FloatArray) -> FloatArray:
@@ -157,20 +132,3 @@ def lin_log(tau: float | FloatArray, start: float | FloatArray, end: float | Flo
     u = np.log1p((tau - start) / c1) + (tau - start) / c3 - np.log1p((end - tau) / c2)
     y: FloatArray = (u - u0) / (u1 - u0)
     return y
-
-
-def parse_array(text: str) -> FloatArray:
-    """The 2-D array written as the string "rows cols v v ..." (the history coefficients).
-
-    Parameters
-    ----------
-    text : str
-        "rows cols" then rows * cols numbers, separated by spaces.
-
-    Returns
-    -------
-    ndarray
-        [rows, cols].
-    """
-    v = np.array(text.split(), dtype=float)
-    return v[2:].reshape(int(v[0]), int(v[1]))

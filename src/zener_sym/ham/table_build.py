@@ -25,24 +25,28 @@ The pieces follow the singularities of the summary in lambda:
 
 tau_d and e are tabulated as their logarithms (relative accuracy: e falls to 1.4e-3).
 
+The table is a configuration of the package's one Chebyshev-table engine
+(:mod:`zener_sym.numerics.cheb_table_build`): :func:`spec` describes it (its last piece starts at
+lam_cont, found at build time), the node function samples :func:`reference`.
+
 The node values come from floating-point root finding and quadrature, so the text is not meant
 to be bit-reproducible across machines: the table is NOT in ``codegen.BUILDERS``;
-``zener-sym ham1-table --check`` rebuilds it and compares numerically (``CHECK_RTOL``).
+``zener-sym regen --check ham1-table`` rebuilds it and compares numerically (``CHECK_RTOL``).
 """
 from __future__ import annotations
 
 import pathlib
 from collections.abc import Mapping
-from typing import Any, TypedDict
+from typing import Any, cast
 
 import numpy as np
 
 from ..codegen import inputs_hash
-from ..codegen.tables import float_tuple, table_module
-from ..numerics.chebyshev import (cheb_coefficients, cheb_nodes, coefficient_difference,
-                                  trim_trailing)
+from ..codegen.tables import table_module
+from ..numerics import cheb_table_build as engine
+from ..numerics.cheb_table import TableSpec
+from ..numerics.cheb_table_build import NodeData
 from ..typing import FloatArray, RealArrayLike
-from .table import variable_ends
 
 #: Chebyshev points per lambda piece (first the two pieces in lambda, then the one in s).
 N_NODES = (28, 28, 36)
@@ -62,12 +66,8 @@ KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
 KINDS = ("lam", "sqrt")
 
 
-class Tables(TypedDict):
-    """A built table, as :func:`build_tables` gives it and :func:`render` prints it."""
-
-    lam_cont: float
-    pieces: list[tuple[str, float, float]]
-    coef: dict[str, list[FloatArray]]
+#: A built table: the engine's ``Tables`` (summary only) and lam_cont.
+Tables = dict[str, Any]
 
 
 def lam_crit() -> float:
@@ -138,13 +138,32 @@ def pieces(lam_cont: float) -> list[tuple[str, float, float]]:
     return [("lam", 0.0, LAM_SPLIT), ("lam", LAM_SPLIT, lam_cont), ("sqrt", lam_cont, lam_crit())]
 
 
+def spec(lam_cont: float) -> TableSpec:
+    """The table's description for the engine: :func:`pieces`, ``KEYS``, ``N_NODES``, ``TRIM``,
+    ``CHECK_RTOL`` and 17 digits.
+
+    Parameters
+    ----------
+    lam_cont : float
+        As for :func:`pieces`.
+
+    Returns
+    -------
+    TableSpec
+        The description, written into the table by :func:`render`.
+    """
+    return TableSpec(pieces=tuple(pieces(lam_cont)), fields=KEYS, nodes=N_NODES, trim=TRIM,
+                     check_rtol=CHECK_RTOL, digits=17)
+
+
 def piece_nodes(kind: str, a: float, b: float, n: int) -> FloatArray:
-    """The lambda nodes of a piece: Chebyshev points in its variable.
+    """The lambda nodes of a piece: Chebyshev points in its variable
+    (``numerics.cheb_table_build.piece_nodes``).
 
     Parameters
     ----------
     kind : {'lam', 'sqrt'}
-        The piece's variable (:func:`zener_sym.ham.table.variable_ends`).
+        The piece's variable (``numerics.cheb_table.PIECE_KINDS``).
     a, b : float
         The piece's ends in lambda.
     n : int
@@ -164,35 +183,31 @@ def piece_nodes(kind: str, a: float, b: float, n: int) -> FloatArray:
     >>> bool(np.allclose(np.sort(s), 0.25 + 0.25 * np.cos((2 * np.arange(5)[::-1] + 1) * np.pi / 10)))
     True
     """
-    ga, gb = variable_ends(kind, a, b)
-    g = ga + (gb - ga) * (cheb_nodes(n) + 1.0) / 2.0
-    return g if kind == "lam" else a + g * g
+    return engine.piece_nodes(kind, a, b, n)
 
 
 def build_tables() -> Tables:
-    """Sample the reference on every piece and fit its Chebyshev coefficients (slow: minutes).
+    """Sample the reference on every piece and fit its Chebyshev coefficients.
 
     Returns
     -------
     Tables
-        {"lam_cont": float, "pieces": [(kind, a, b)], "coef": {key: [1-D per piece]}}.
+        The engine's tables ("summary", "spec") and "lam_cont".
 
     Raises
     ------
     RuntimeError
         The reference gave a non-finite value at a node.
     """
-    lam_cont = continuation_lambda()
-    ps = pieces(lam_cont)
-    coef: dict[str, list[FloatArray]] = {k: [] for k in KEYS}
-    for (kind, a, b), n in zip(ps, N_NODES):
-        v = reference(piece_nodes(kind, a, b, n))
-        for k in KEYS:
-            if not np.all(np.isfinite(v[k])):
-                raise RuntimeError(f"ham1 reference gave a non-finite {k} on the piece [{a}, {b}]")
-            c = cheb_coefficients(v[k])
-            coef[k].append(trim_trailing(c, np.abs(c) > TRIM * np.abs(c).max()))
-    return {"lam_cont": lam_cont, "pieces": ps, "coef": coef}
+    s = spec(continuation_lambda())
+
+    def sample(p: int, lams: FloatArray) -> list[NodeData]:
+        v = reference(lams)  # vectorised: one call per piece
+        return [{k: float(v[k][j]) for k in KEYS} for j in range(len(lams))]
+
+    t = dict(engine.build_tables(s, sample))
+    t["lam_cont"] = s.pieces[-1][1]
+    return t
 
 
 def input_files() -> list[pathlib.Path]:
@@ -228,28 +243,21 @@ def render(tables: Tables | None = None) -> str:
         The module text, with its do-not-edit header and inputs hash.
     """
     t = build_tables() if tables is None else tables
-    lines = [
-        "#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
-        f"LAM_CONT = {float(t['lam_cont']):.17g}",
-        "#: (kind, start, end) per lambda piece; kind 'lam': Chebyshev variable lambda,",
-        "#: 'sqrt': sqrt(lambda - start)",
-        "PIECES = (",
-    ]
-    for kind, a, b in t["pieces"]:
-        lines.append(f"    ({kind!r}, {float(a):.17g}, {float(b):.17g}),")
-    lines += [")", "", "#: field -> one tuple of Chebyshev coefficients per lambda piece", "COEF = {"]
-    for k in KEYS:
-        lines.append(f"    {k!r}: (")
-        for c in t["coef"][k]:
-            lines.append("        " + float_tuple(c, 17) + ",")
-        lines.append("    ),")
-    lines += ["}"]
+    sp = cast(TableSpec, t["spec"])
+    lines = engine.table_lines(
+        cast(engine.Tables, t), sp,
+        ["#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
+         f"LAM_CONT = {float(sp.pieces[-1][1]):.17g}"],
+        "field -> one tuple of Chebyshev coefficients per lambda piece", summary_name="COEF")
+    # the pieces under the name the older readers use, after the summary (the description
+    # comes first)
+    lines += ["#: (kind, start, end) per lambda piece (TABLE_PIECES)", "PIECES = TABLE_PIECES"]
     title = "Chebyshev tables of the first-order HAM summary (Eq. 42) for 0 <= lambda < lam_crit."
     provenance = ("Built by zener_sym.ham.table_build from the float64 ham1 summary "
-                  "(zener_sym.ham.spectral.summary_numpy); `zener-sym ham1-table --check` "
+                  "(zener_sym.ham.spectral.summary_numpy); `zener-sym regen --check ham1-table` "
                   "rebuilds and compares numerically (the node values come from floating-point "
                   "root finding and quadrature).")
-    return table_module(title, "ham1-table", provenance, inputs_hash(input_files()), lines)
+    return table_module(title, "regen ham1-table", provenance, inputs_hash(input_files()), lines)
 
 
 def table_path() -> pathlib.Path:
@@ -265,14 +273,42 @@ def table_path() -> pathlib.Path:
     return generated_dir() / "ham1_table.py"
 
 
-def compare(stored: Mapping[str, Any], fresh: Tables) -> list[str]:
-    """Differences beyond CHECK_RTOL between two tables, as readable lines (empty: they agree).
+def as_tables(t: Mapping[str, Any]) -> Tables:
+    """A table in any of its forms as the engine's ``Tables``: built (``build_tables``), the
+    generated module's names (COEF and its TABLE_* description, or the older LAM_CONT, PIECES,
+    COEF).
+
+    Parameters
+    ----------
+    t : mapping
+        The table.
+
+    Returns
+    -------
+    Tables
+    """
+    if "spec" in t:
+        return dict(t)
+    if "TABLE_PIECES" in t:
+        return dict(engine.stored_tables(t, "COEF"))
+    pieces = tuple((str(k), float(a), float(b)) for k, a, b in t["PIECES"])
+    nodes = tuple(N_NODES[i] if i < len(N_NODES) else 1 for i in range(len(pieces)))
+    sp = TableSpec(pieces=pieces, fields=KEYS, nodes=nodes, trim=TRIM, check_rtol=CHECK_RTOL,
+                   digits=17)
+    return {"spec": sp, "summary": {k: [np.asarray(c, dtype=float) for c in v]
+                                    for k, v in t["COEF"].items()}}
+
+
+def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
+    """Differences beyond CHECK_RTOL between two tables, as readable lines (empty: they agree):
+    the engine's ``compare`` (the pieces, lam_cont among their ends, and every series).
 
     Parameters
     ----------
     stored : mapping
-        The generated module's names: LAM_CONT, PIECES, COEF.
-    fresh : Tables
+        The committed table (the generated module's LAM_CONT, PIECES, COEF, or the engine's
+        ``stored_tables``).
+    fresh : mapping
         A table just built (:func:`build_tables`).
 
     Returns
@@ -280,19 +316,5 @@ def compare(stored: Mapping[str, Any], fresh: Tables) -> list[str]:
     list of str
         One line per difference; empty when they agree.
     """
-    bad = []
-    if abs(stored["LAM_CONT"] - fresh["lam_cont"]) > CHECK_RTOL * fresh["lam_cont"]:
-        bad.append(f"lam_cont {stored['LAM_CONT']!r} != rebuilt {fresh['lam_cont']!r}")
-    if [p[0] for p in stored["PIECES"]] != [p[0] for p in fresh["pieces"]] or len(
-            stored["PIECES"]) != len(fresh["pieces"]):
-        bad.append(f"pieces {stored['PIECES']!r} != rebuilt {fresh['pieces']!r}")
-        return bad
-    for key in fresh["coef"]:
-        if key not in stored["COEF"]:
-            bad.append(f"field {key} missing from the stored table")
-            continue
-        for i, (c_new, c_old) in enumerate(zip(fresh["coef"][key], stored["COEF"][key])):
-            err = coefficient_difference(c_new, c_old)
-            if not err <= CHECK_RTOL:
-                bad.append(f"{key} lambda piece {i}: relative difference {err:.2e} > {CHECK_RTOL:g}")
-    return bad
+    return engine.compare(cast(engine.Tables, as_tables(stored)),
+                          cast(engine.Tables, as_tables(fresh)))

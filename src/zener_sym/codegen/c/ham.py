@@ -1,8 +1,8 @@
 """C text of the HAM kernels: the formulas of ``codegen.ham_exprs`` printed by SymPy's C99 printer
 (with common subexpressions shared through ``sympy.cse``), and the Gauss-Jacobi rule the
-first-order square-root integrals need (the numpy kernels' rule, ``ham.quadrature``: 64 nodes,
-weight u^{1/2} on [0, 1]), its nodes computed here at 40 digits so the file does not depend on
-the machine's LAPACK.
+first-order square-root integrals need (the numpy kernels' rule, ``numerics.sqrt_integrals``:
+64 nodes, weight u^{1/2} on [0, 1]), its nodes computed here at 40 digits so the file does not
+depend on the machine's LAPACK.
 """
 from __future__ import annotations
 
@@ -18,11 +18,11 @@ from ..ham_exprs import SYMBOLS as Y
 from ..ham_exprs import ham_expressions
 from .tables import num
 
-#: Gauss-Jacobi nodes and the cut of the left piece, as in ``zener_sym.ham.quadrature``
+#: Gauss-Jacobi nodes and the cut of the left piece, as in ``zener_sym.numerics.sqrt_integrals``
 #: (N_NODES, CUT; codegen cannot import that leaf helper, tests compare the two).
 N_NODES = 64
 CUT = 60.0
-#: Terms of P3's Taylor series in x^2 used for |x| < 1/2 (as ``ham.chebyshev.p3``).
+#: Terms of P3's Taylor series in x^2 used for |x| < 1/2 (as ``numerics.elementary.p3``).
 P3_TERMS = 12
 
 
@@ -128,7 +128,7 @@ def ham_c() -> str:
         "/* k (25), beta (32), omega0 (33) */\n"
         "static void zs__ham_params(double lam, double *k_out, double *beta_out, double *omega0_out)\n{\n"
         + block(p, params) + "\n    *k_out = k;\n    *beta_out = beta;\n    *omega0_out = omega0;\n}\n\n",
-        "/* sin on the first half wave [0, pi], 0 beyond (ham.chebyshev.half_wave_sin) */\n"
+        "/* sin on the first half wave [0, pi], 0 beyond (numerics.elementary.half_wave_sin) */\n"
         "static double zs__half_wave_sin(double theta)\n{\n"
         "    return theta < ZS__PI ? sin(theta) : 0.0;\n}\n\n",
         "/* delta0 (35) on the zeroth-order contact 0 <= omega0 tau <= pi, 0 after (Eq. 54) */\n"

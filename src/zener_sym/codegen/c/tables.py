@@ -58,6 +58,45 @@ def _log_rounded(x: float) -> float:
         return float(mpmath.log(mpmath.mpf(x)))
 
 
+#: C codes of the lambda pieces' kinds of Chebyshev variable (``numerics.cheb_table.PIECE_KINDS``;
+#: ZS__LAM .. ZS__SQRT in types.c.in).
+PIECE_CODES = {"lam": 0, "log": 1, "sqrt_lam": 2, "sqrt": 3}
+
+
+def _variable_ends(kind: str, a: float, b: float) -> tuple[float, float]:
+    """The Chebyshev variable's ends on the piece [a, b] (``numerics.cheb_table.Pieces``),
+    correctly rounded (mpmath's log, IEEE sqrt), so the file does not depend on the machine."""
+    if kind == "log":
+        return _log_rounded(a), _log_rounded(b)
+    if kind == "sqrt_lam":
+        return math.sqrt(a), math.sqrt(b)
+    if kind == "sqrt":
+        return 0.0, math.sqrt(b - a)
+    return a, b
+
+
+def pieces_c(p: str, pieces: Sequence[Sequence[Any]]) -> tuple[str, list[float], list[float]]:
+    """C text of a table's lambda pieces (from its description, the generated module's
+    TABLE_PIECES): the arrays ``<p>_edges``, ``_ga``, ``_gb``, ``_kind`` that a ``zs__pieces``
+    points to, and the variable's ends ga, gb."""
+    kinds = [str(k) for k, _, _ in pieces]
+    unknown = sorted(set(kinds) - set(PIECE_CODES))
+    if unknown:
+        raise ValueError(f"table {p}: piece kinds {unknown}; the C runtime knows "
+                         f"{', '.join(PIECE_CODES)}")
+    edges = [float(a) for _, a, _ in pieces] + [float(pieces[-1][2])]
+    ends = [_variable_ends(k, float(a), float(b)) for k, a, b in pieces]
+    ga, gb = [e[0] for e in ends], [e[1] for e in ends]
+    codes = ", ".join(str(PIECE_CODES[k]) for k in kinds)
+    text = (_array(f"{p}_edges", edges) + _array(f"{p}_ga", ga) + _array(f"{p}_gb", gb)
+            + f"static const int {p}_kind[{len(pieces)}] = {{{codes}}};\n")
+    return text, ga, gb
+
+
+def _pieces_init(p: str, n: int) -> str:
+    return f"{{{n}, {p}_edges, {p}_ga, {p}_gb, {p}_kind}}"
+
+
 def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     """C text defining ``static const zs__exact_table zs__tab_<name>``, and its sizes."""
     pieces = tuple(ns.get("TIME_PIECES", TIME_PIECES))
@@ -65,16 +104,14 @@ def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
         raise ValueError(f"table {name}: time pieces {pieces}; the C runtime evaluates "
                          f"{TIME_PIECES} with fields ('f', 'I') (add the new maps to "
                          "codegen/c/runtime.py first)")
-    edges = [float(x) for x in ns["LAM_PIECES"]]
-    n_lam = len(edges) - 1
+    pieces = ns["TABLE_PIECES"]
+    edges = [float(a) for _, a, _ in pieces] + [float(pieces[-1][2])]
+    n_lam = len(pieces)
     log_from = float(ns["LOG_FROM"])
     hist_to = float(ns["HISTORY_TO"])
-    log = [a >= log_from for a in edges[:-1]]
-    ga = [_log_rounded(a) if lg else a for a, lg in zip(edges[:-1], log)]
-    gb = [_log_rounded(b) if lg else b for b, lg in zip(edges[1:], log)]
     p = f"zs__{name}"
-    out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n",
-           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb),
+    text, ga, gb = pieces_c(p, pieces)
+    out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n", text,
            # x = g k - o, a summary's piece variable without a division (IEEE operations on the
            # written doubles: the same on every machine)
            _array(f"{p}_xk", [2.0 / (b - a) for a, b in zip(ga, gb)]),
@@ -84,19 +121,17 @@ def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     sizes["max_sum"] = _summary_blocks(p, ns, EXACT_SUMMARY_KEYS, n_lam, out)
     # history: per time piece and field, per lambda piece and sub-piece, a [rows][cols] matrix
     n_hist = sum(1 for b in edges[1:] if b <= hist_to)
-    pieces_c = _history_c(name, p, ns, TIME_PIECES, ("f", "I"), n_lam, out, sizes)
-    logs = ", ".join("1" if lg else "0" for lg in log)
-    out.append(f"static const int {p}_log[{n_lam}] = {{{logs}}};\n")
+    tpieces = _history_c(name, p, ns, TIME_PIECES, ("f", "I"), n_lam, out, sizes)
     for key in ("max_lamdeg", "max_sum"):
         sizes[key] = max(sizes[key], 2)
     out.append(
         f"static const zs__exact_table zs__tab_{name} = {{\n"
-        f"    {n_lam}, {n_hist}, {p}_edges, {p}_ga, {p}_gb, {p}_xk, {p}_xo, {p}_log,\n"
+        f"    {_pieces_init(p, n_lam)}, {n_hist}, {p}_xk, {p}_xo,\n"
         f"    {num(edges[0])}, {num(edges[-1])}, {num(hist_to)},\n"
         f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
         f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"
         f"    {p}_sum, {p}_sum_len,\n"
-        f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
+        f"    {{{', '.join(tpieces)}}}\n}};\n\n")
     return "".join(out), sizes
 
 
@@ -216,19 +251,12 @@ def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], key
 
 def ham1_table_c(ns: dict[str, Any]) -> tuple[str, int]:
     """C text of the ham1 summary table (``zs__h1_*``), and its largest degree."""
-    pieces = ns["PIECES"]
-    out = ["/* ---- ham1 summary table ---- */\n"]
-    kinds, starts, ga, gb, ptrs, lens = [], [], [], [], [], []
+    pieces = ns["TABLE_PIECES"]
+    text, _, _ = pieces_c("zs__h1", pieces)
+    out = ["/* ---- ham1 summary table ---- */\n", text]
+    ptrs, lens = [], []
     deg = 0
-    for ip, (kind, a, b) in enumerate(pieces):
-        a, b = float(a), float(b)
-        if kind not in ("lam", "sqrt"):
-            raise ValueError(f"ham1 table: unknown piece kind {kind!r}")
-        kinds.append("1" if kind == "sqrt" else "0")
-        starts.append(a)
-        # the Chebyshev variable's ends (ham.table_build.variable_ends)
-        ga.append(a if kind == "lam" else 0.0)
-        gb.append(b if kind == "lam" else math.sqrt(b - a))
+    for ip in range(len(pieces)):
         for key in HAM1_KEYS:
             c = ns["COEF"][key][ip]
             out.append(_array(f"zs__h1_{ip}_{key}", c))
@@ -236,8 +264,7 @@ def ham1_table_c(ns: dict[str, Any]) -> tuple[str, int]:
             lens.append(str(len(c)))
             deg = max(deg, len(c))
     n = len(pieces)
-    out.append(_array("zs__h1_start", starts) + _array("zs__h1_ga", ga) + _array("zs__h1_gb", gb))
-    out.append(f"static const int zs__h1_sqrt[{n}] = {{{', '.join(kinds)}}};\n")
+    out.append(f"static const zs__pieces zs__h1_pieces = {_pieces_init('zs__h1', n)};\n")
     out.append(f"static const double *const zs__h1_coef[{len(ptrs)}] = {{{', '.join(ptrs)}}};\n")
     out.append(f"static const int zs__h1_len[{len(lens)}] = {{{', '.join(lens)}}};\n")
     out.append(f"#define ZS__H1_PIECES {n}\n#define ZS__H1_TOP {num(float(pieces[-1][2]))}\n\n")
@@ -265,26 +292,17 @@ def force_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
     if missing:
         raise ValueError(f"force table {name}: summary keys {missing} missing")
-    edges = [float(x) for x in ns["LAM_PIECES"]]
-    n_lam = len(edges) - 1
-    log_from = float(ns["LOG_FROM"])
-    log = [a >= log_from for a in edges[:-1]]
-
-    def var(x: float, lg: bool) -> float:
-        return _log_rounded(x) if lg else math.sqrt(x)
-
-    ga = [var(a, lg) for a, lg in zip(edges[:-1], log)]
-    gb = [var(b, lg) for b, lg in zip(edges[1:], log)]
+    pieces = ns["TABLE_PIECES"]
+    n_lam = len(pieces)
+    edges = [float(a) for _, a, _ in pieces] + [float(pieces[-1][2])]
     p = f"zs__f{name}"
-    out = [f"/* ---- force-free-end summary table '{name}' ---- */\n",
-           _array(f"{p}_edges", edges), _array(f"{p}_ga", ga), _array(f"{p}_gb", gb)]
+    text, _, _ = pieces_c(p, pieces)
+    out = [f"/* ---- force-free-end summary table '{name}' ---- */\n", text]
     sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": 2}
     sizes["max_sum"] = max(2, _summary_blocks(p, ns, FORCE_SUMMARY_KEYS, n_lam, out))
-    pieces_c = _history_c(name, p, ns, FORCE_TIME_PIECES, FORCE_HISTORY_KEYS, n_lam, out, sizes)
-    logs = ", ".join("1" if lg else "0" for lg in log)
-    out.append(f"static const int {p}_log[{n_lam}] = {{{logs}}};\n"
-               f"static const zs__force_table zs__ftab_{name} = {{\n"
-               f"    {n_lam}, {p}_edges, {p}_ga, {p}_gb, {p}_log, {num(edges[0])}, "
+    tpieces = _history_c(name, p, ns, FORCE_TIME_PIECES, FORCE_HISTORY_KEYS, n_lam, out, sizes)
+    out.append(f"static const zs__force_table zs__ftab_{name} = {{\n"
+               f"    {_pieces_init(p, n_lam)}, {num(edges[0])}, "
                f"{num(edges[-1])}, {p}_sum, {p}_sum_len,\n"
-               f"    {{{', '.join(pieces_c)}}}\n}};\n\n")
+               f"    {{{', '.join(tpieces)}}}\n}};\n\n")
     return "".join(out), sizes

@@ -1,0 +1,515 @@
+"""The one Chebyshev-table engine at run time: a table's description as data, and the evaluator
+every table of the package is an instance of.
+
+A table is piecewise in lambda. Its description (:class:`TableSpec`) is data written into the
+generated table module: the pieces ``(kind, start, end)``, the stored fields, the degrees (points
+per piece), the trimming level and the ``--check`` tolerance. The kind of a piece names its
+Chebyshev variable g (:data:`PIECE_KINDS`): lambda, ln lambda, sqrt(lambda) or
+sqrt(lambda - start). The plate's end of contact (``exact.table``), the force-free end
+(``exact.force_table``) and the ham1 summary (``ham.table``) are instances: each loads its
+generated module into a :class:`SummaryTable` (and, for the exact tables, a history made of
+:func:`history_rows` and :func:`line_coefficients`) and keeps only what is its own (the derived
+fields, the time maps of its history). The offline side is :mod:`.cheb_table_build`.
+
+Arithmetic is in a fixed order (the series summed term by term, the lambda contraction one
+matrix product per piece), so each lambda's value does not depend on how many others are
+evaluated with it.
+"""
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from typing import Any, TypeVar
+
+import numpy as np
+import numpy.typing as npt
+
+from ..typing import FloatArray, RealArrayLike
+from .chebyshev import cheb_to_monomial
+
+__all__ = ["PIECE_KINDS", "TableSpec", "Pieces", "SummaryTable", "parse_array", "history_rows",
+           "history_tables", "line_coefficients", "spec_assignments", "spec_of", "WrittenConstants"]
+
+#: The Chebyshev variable g of a lambda piece [start, end], by kind.
+PIECE_KINDS = {"lam": "lambda", "log": "ln lambda", "sqrt_lam": "sqrt(lambda)",
+               "sqrt": "sqrt(lambda - start)"}
+
+#: Piece indices.
+Index = npt.NDArray[np.intp]
+_W = TypeVar("_W", bound="WrittenConstants")
+
+
+class WrittenConstants:
+    """A frozen dataclass of constants written into a generated module as ``NAME = value``
+    lines (field names are the module's names) and read back from it: a table's own layout
+    beside its :class:`TableSpec` (the exact tables' time pieces and maps)."""
+
+    @classmethod
+    def of(cls: type[_W], module: Any) -> _W:
+        """The constants written into a generated module (its upper-case names).
+
+        Parameters
+        ----------
+        module : module
+            The generated table module.
+
+        Returns
+        -------
+        WrittenConstants
+            An instance of the dataclass ``of`` is called on.
+        """
+        fields = dataclasses.fields(cls)  # type: ignore[arg-type]
+        return cls(**{f.name: getattr(module, f.name) for f in fields})
+
+    def assignments(self) -> list[str]:
+        """``NAME = value`` lines of a generated module, in field order (read back by ``of``).
+
+        Returns
+        -------
+        list of str
+            One line per field.
+        """
+        return [f"{f.name} = {getattr(self, f.name)!r}"
+                for f in dataclasses.fields(self)]  # type: ignore[arg-type]
+
+
+@dataclasses.dataclass(frozen=True)
+class TableSpec:
+    """The description of a piecewise Chebyshev table in lambda (data, written into the
+    generated module by :func:`spec_assignments`).
+
+    Attributes
+    ----------
+    pieces : tuple of (str, float, float)
+        ``(kind, start, end)`` per lambda piece, contiguous, kinds from :data:`PIECE_KINDS`.
+    fields : tuple of str
+        The stored series, in order.
+    nodes : tuple of int
+        Chebyshev points of the first kind per piece (the series' degree + 1 before trimming).
+    trim : float
+        Trailing coefficients below this fraction of a series' largest are dropped.
+    check_rtol : float
+        ``--check`` tolerance: a rebuilt coefficient may differ by this relative to its
+        series' largest.
+    digits : int
+        Significant digits of each stored summary coefficient.
+    """
+
+    pieces: tuple[tuple[str, float, float], ...]
+    fields: tuple[str, ...]
+    nodes: tuple[int, ...]
+    trim: float
+    check_rtol: float
+    digits: int = 15
+
+    def __post_init__(self) -> None:
+        if not self.pieces:
+            raise ValueError("a table needs at least one lambda piece")
+        for kind, a, b in self.pieces:
+            if kind not in PIECE_KINDS:
+                raise ValueError(f"unknown piece kind {kind!r}; allowed: {', '.join(PIECE_KINDS)}")
+            if not float(a) < float(b):
+                raise ValueError(f"piece ({kind!r}, {a!r}, {b!r}): its start must lie below its "
+                                 "end")
+        for (_, _, b), (_, a, _) in zip(self.pieces[:-1], self.pieces[1:]):
+            if float(a) != float(b):
+                raise ValueError(f"pieces must be contiguous: one ends at {b!r}, the next starts "
+                                 f"at {a!r}")
+        if len(self.nodes) != len(self.pieces):
+            raise ValueError(f"{len(self.nodes)} node counts for {len(self.pieces)} pieces")
+
+    @property
+    def edges(self) -> tuple[float, ...]:
+        """The breakpoints: every piece's start and the last piece's end."""
+        return (*(float(a) for _, a, _ in self.pieces), float(self.pieces[-1][2]))
+
+
+def spec_assignments(spec: TableSpec) -> list[str]:
+    """The ``TABLE_*`` lines of a generated module that hold ``spec`` (read back by
+    :meth:`SummaryTable.of`'s caller through ``TableSpec(**...)``).
+
+    Parameters
+    ----------
+    spec : TableSpec
+        The description.
+
+    Returns
+    -------
+    list of str
+        Comment and assignment lines.
+    """
+    pieces = [f"    ({k!r}, {float(a)!r}, {float(b)!r})," for k, a, b in spec.pieces]
+    return ["#: the table's description (zener_sym.numerics.cheb_table.TableSpec): per lambda",
+            "#: piece (kind of Chebyshev variable, start, end), the stored fields, points per",
+            "#: piece, trimming level, --check tolerance, digits",
+            "TABLE_PIECES = (", *pieces, ")", f"TABLE_FIELDS = {tuple(spec.fields)!r}",
+            f"TABLE_NODES = {tuple(spec.nodes)!r}", f"TABLE_TRIM = {spec.trim!r}",
+            f"TABLE_CHECK_RTOL = {spec.check_rtol!r}", f"TABLE_DIGITS = {spec.digits!r}"]
+
+
+def spec_of(module: Any) -> TableSpec:
+    """The :class:`TableSpec` a generated module holds (its ``TABLE_*`` names).
+
+    Parameters
+    ----------
+    module : module or mapping
+        A generated table module, or its globals.
+
+    Returns
+    -------
+    TableSpec
+    """
+    ns = module if isinstance(module, Mapping) else vars(module)
+    return TableSpec(pieces=tuple((str(k), float(a), float(b)) for k, a, b in ns["TABLE_PIECES"]),
+                     fields=tuple(ns["TABLE_FIELDS"]), nodes=tuple(ns["TABLE_NODES"]),
+                     trim=float(ns["TABLE_TRIM"]), check_rtol=float(ns["TABLE_CHECK_RTOL"]),
+                     digits=int(ns["TABLE_DIGITS"]))
+
+
+class Pieces:
+    """The lambda pieces of a table: lookup, the Chebyshev variable and its slope.
+
+    Parameters
+    ----------
+    pieces : sequence of (str, float, float)
+        ``TableSpec.pieces``.
+    """
+
+    def __init__(self, pieces: Sequence[tuple[str, float, float]]) -> None:
+        kinds = [k for k, _, _ in pieces]
+        self.edges = np.array([float(a) for _, a, _ in pieces] + [float(pieces[-1][2])])
+        self.start = self.edges[:-1]
+        self.kind = {k: np.array([x == k for x in kinds]) for k in PIECE_KINDS if k in kinds}
+        every = np.arange(len(kinds))
+        self.ga = self.variable(self.edges[:-1], every)
+        self.gb = self.variable(self.edges[1:], every)
+
+    def variable(self, lam: FloatArray, i: Index) -> FloatArray:
+        """The Chebyshev variable g of piece ``i`` at each lambda (elementwise)."""
+        g = lam
+        with np.errstate(divide="ignore", invalid="ignore"):
+            if "log" in self.kind:
+                m = self.kind["log"][i]
+                g = np.where(m, np.log(np.where(m, lam, 1.0)), g)
+            if "sqrt_lam" in self.kind:
+                g = np.where(self.kind["sqrt_lam"][i], np.sqrt(lam), g)
+            if "sqrt" in self.kind:
+                g = np.where(self.kind["sqrt"][i], np.sqrt(np.maximum(lam - self.start[i], 0.0)),
+                             g)
+        return np.asarray(g, dtype=float)
+
+    def locate(self, lam: FloatArray, last: int | None = None) -> tuple[Index, FloatArray]:
+        """Piece index (at most ``last``, default the last piece) and the local x in [-1, 1]."""
+        top = len(self.start) - 1 if last is None else last
+        i = np.clip(np.searchsorted(self.edges, lam, side="right") - 1, 0, top)
+        g = self.variable(lam, i)
+        a, b = self.ga[i], self.gb[i]
+        return i, np.clip((2.0 * g - a - b) / (b - a), -1.0, 1.0)
+
+    def dx_dlam(self, lam: FloatArray, i: Index) -> FloatArray:
+        """dx/dlambda of each lambda's piece variable (infinite where g has a square-root
+        branch point: sqrt pieces at their origin)."""
+        width = self.gb[i] - self.ga[i]
+        scale = 2.0 / width
+        with np.errstate(divide="ignore", invalid="ignore"):
+            if "log" in self.kind:
+                scale = np.where(self.kind["log"][i],
+                                 2.0 / (width * np.where(lam > 0, lam, 1.0)), scale)
+            if "sqrt_lam" in self.kind:
+                scale = np.where(self.kind["sqrt_lam"][i], 1.0 / (width * np.sqrt(lam)), scale)
+            if "sqrt" in self.kind:
+                scale = np.where(self.kind["sqrt"][i],
+                                 1.0 / (width * np.sqrt(lam - self.start[i])), scale)
+        return np.asarray(scale, dtype=float)
+
+
+#: Lambdas per block of ``_series_sum``: its products [degree, lambda, field] stay small.
+_SUM_BLOCK = 1024
+
+
+def _series_sum(tl: FloatArray, ci: FloatArray) -> FloatArray:
+    """sum_k tl[:, k] ci[:, :, k] in a fixed order, term after term (each lambda's value does
+    not depend on the others evaluated with it; ``np.add.accumulate`` adds strictly in order,
+    so one call replaces the loop over degrees)."""
+    n = min(tl.shape[1], ci.shape[2])
+    out = np.empty(ci.shape[:2])
+    for s in range(0, len(out), _SUM_BLOCK):
+        prods = tl[s:s + _SUM_BLOCK, None, :n] * ci[s:s + _SUM_BLOCK, :, :n]
+        out[s:s + _SUM_BLOCK] = np.add.accumulate(prods, axis=2)[:, :, -1]
+    return out
+
+
+def _basis(x: FloatArray, n: int) -> FloatArray:
+    """T_0..T_{n-1} at x, [point, degree], by the three-term recurrence T_k = 2 x T_{k-1} -
+    T_{k-2} (numpy's ``chebvander``; for a few points the same operations on Python floats,
+    which cost less than numpy's per-degree calls)."""
+    if len(x) > 4 or n < 2:
+        return np.asarray(np.polynomial.chebyshev.chebvander(x, max(n - 1, 0)), dtype=float)
+    out = np.empty((len(x), n))
+    for j, xj in enumerate(x.tolist()):
+        x2, t0, t1 = 2.0 * xj, 1.0, xj
+        row = [t0, t1]
+        for _ in range(2, n):
+            t0, t1 = t1, t1 * x2 - t0
+            row.append(t1)
+        out[j] = row
+    return out
+
+
+class SummaryTable:
+    """The summary series of a table: per lambda piece one Chebyshev series per field.
+
+    Parameters
+    ----------
+    pieces : sequence of (str, float, float)
+        The lambda pieces (``TableSpec.pieces``).
+    fields : sequence of str
+        The stored series' names.
+    series : mapping
+        field -> one sequence of Chebyshev coefficients per piece (lengths may differ).
+    what : str
+        The table's name in messages ("exact table", ...).
+    hint : str
+        Appended to the out-of-range message (what to do instead).
+    top_open : bool
+        The range excludes its upper end (the ham1 table ends at a singularity).
+    """
+
+    def __init__(self, pieces: Sequence[tuple[str, float, float]], fields: Sequence[str],
+                 series: Mapping[str, Sequence[Sequence[float]]], what: str, hint: str = "",
+                 top_open: bool = False) -> None:
+        self.pieces = Pieces(pieces)
+        self.fields = tuple(fields)
+        n = len(pieces)
+        deg = max(len(series[k][p]) for k in self.fields for p in range(n))
+        c = np.zeros((n, len(self.fields), deg))  # [piece, field, degree], zero-padded
+        for f, k in enumerate(self.fields):
+            for p in range(n):
+                c[p, f, : len(series[k][p])] = series[k][p]
+        self.coef = c
+        # d/dx term by term (chebder: exact on the stored coefficients but for its recurrence)
+        self.dcoef = (np.zeros_like(c) if deg <= 1 else
+                      np.asarray(np.polynomial.chebyshev.chebder(c, axis=2), dtype=float))
+        self.what, self.hint, self.top_open = what, hint, top_open
+        self.lo, self.hi = float(self.pieces.edges[0]), float(self.pieces.edges[-1])
+
+    @classmethod
+    def of(cls, module: Any, what: str, hint: str = "", summary_name: str = "SUMMARY",
+           top_open: bool = False) -> "SummaryTable":
+        """The summary of a generated table module, with the description written into it.
+
+        Parameters
+        ----------
+        module : module
+            The generated table module (``TABLE_*`` and the summary series).
+        what, hint, top_open
+            As for the constructor.
+        summary_name : str
+            The name the series are assigned to.
+
+        Returns
+        -------
+        SummaryTable
+        """
+        spec = spec_of(module)
+        return cls(spec.pieces, spec.fields, getattr(module, summary_name), what, hint, top_open)
+
+    def in_range(self, lam: RealArrayLike, hi: float | None = None) -> npt.NDArray[np.bool_]:
+        """Boolean mask: lambda inside the range [lo, hi] ([lo, hi) for an open top).
+
+        Parameters
+        ----------
+        lam : array_like
+            lambda.
+        hi : float, optional
+            Another upper end (the history's), default the table's.
+
+        Returns
+        -------
+        ndarray of bool
+            lam's shape.
+        """
+        lam_a = np.asarray(lam, dtype=float)
+        top = self.hi if hi is None else hi
+        upper = lam_a < top if self.top_open else lam_a <= top
+        inside: npt.NDArray[np.bool_] = (lam_a >= self.lo) & upper
+        return inside
+
+    def check(self, lam: FloatArray, hi: float | None = None, what: str | None = None) -> None:
+        """ValueError naming the first lambda outside the range (``in_range``).
+
+        Parameters
+        ----------
+        lam : ndarray
+            lambda.
+        hi : float, optional
+            Another upper end (the history's).
+        what : str, optional
+            Another name for the table in the message.
+        """
+        inside = self.in_range(lam, hi)
+        if not np.all(inside):
+            bad = float(np.asarray(lam)[~inside].ravel()[0])
+            top = self.hi if hi is None else hi
+            rng = (f"[{self.lo:g}, {top!r})" if self.top_open else f"[{self.lo:g}, {top:g}]")
+            raise ValueError(f"lambda = {bad!r} is outside the {what or self.what}'s range "
+                             f"{rng}{self.hint}")
+
+    def locate(self, lam: FloatArray, hi: float | None = None) -> tuple[Index, FloatArray]:
+        """Checked piece index and local x (``hi``: among the pieces that end by ``hi``, so
+        lambda = hi is the end of the last of them)."""
+        self.check(lam)
+        last = None if hi is None else int(np.count_nonzero(self.pieces.edges[1:] <= hi)) - 1
+        return self.pieces.locate(lam, last)
+
+    def values(self, lam: FloatArray,
+               hi: float | None = None) -> tuple[dict[str, FloatArray], Index, FloatArray,
+                                                  FloatArray]:
+        """Every stored series at lam (1-D): the values by field, piece index, x and the
+        Chebyshev basis T_k(x) [lambda, degree]."""
+        i, x = self.locate(lam, hi)
+        tl = _basis(x, self.coef.shape[2])
+        return dict(zip(self.fields, _series_sum(tl, self.coef[i]).T)), i, x, tl
+
+    def derivatives(self, lam: FloatArray, i: Index, x: FloatArray) -> dict[str, FloatArray]:
+        """d(stored series)/dlambda at lam (1-D) on pieces i at x (from ``values``)."""
+        tl = _basis(x, self.dcoef.shape[2])
+        scale = self.pieces.dx_dlam(lam, i)
+        return {k: c * scale for k, c in zip(self.fields, _series_sum(tl, self.dcoef[i]).T)}
+
+    def one(self, lam: FloatArray, field: str) -> tuple[FloatArray, FloatArray]:
+        """One stored series and its d/dlambda at lam (1-D): only that series is summed."""
+        k = self.fields.index(field)
+        i, x = self.locate(lam)
+        c, d = self.coef[:, k, :], self.dcoef[:, k, :]
+        tl = _basis(x, c.shape[1])
+        val = np.einsum("nk,nk->n", tl, c[i])
+        der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i, : tl.shape[1]])
+        return val, der * self.pieces.dx_dlam(lam, i)
+
+
+def parse_array(text: str) -> FloatArray:
+    """The 2-D array written as the string "rows cols v v ..." (the history coefficients).
+
+    Parameters
+    ----------
+    text : str
+        "rows cols" then rows * cols numbers, separated by spaces.
+
+    Returns
+    -------
+    ndarray
+        [rows, cols].
+    """
+    v = np.array(text.split(), dtype=float)
+    return v[2:].reshape(int(v[0]), int(v[1]))
+
+
+def history_rows(mats: Sequence[Sequence[Sequence[str | RealArrayLike]]],
+                 ) -> tuple[list[FloatArray | None], int, int, npt.NDArray[np.int_]]:
+    """One time piece's history arranged for :func:`line_coefficients`.
+
+    Per lambda piece an array [time degree, lambda degree, 2 * sub-piece + field] (two fields,
+    zero-padded to the time piece's largest degree, trimmed in lambda degree to the last
+    nonzero), so the lambda contraction gives per line the pairs (field 0, field 1) next to each
+    other, read as one complex128 per sub-piece by ``chebyshev.horner_take_pair``. The time
+    direction is converted from Chebyshev to monomial coefficients in the sub-piece's x
+    (Horner's rule: fewer passes over the points than Clenshaw's; on a sub-piece the
+    coefficients fall fast, so the conversion loses no digits that matter).
+
+    Parameters
+    ----------
+    mats : sequence
+        Per field (two), per lambda piece, per sub-piece one [time degree, lambda degree]
+        Chebyshev matrix (an array or its "rows cols v..." string); a lambda piece without this
+        time piece has no sub-pieces.
+
+    Returns
+    -------
+    tuple
+        Per lambda piece the array (None without the piece), the sub-piece count, the time
+        degree and per lambda piece the degree its own coefficients need (Horner starts there).
+    """
+    arrs = [[[parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float) for c in subs]
+             for subs in per] for per in mats]
+    n_lam = len(arrs[0])
+    n_sub = max(len(subs) for per in arrs for subs in per)
+    flat = [c for per in arrs for subs in per for c in subs]
+    deg, n_k = max(c.shape[0] for c in flat), max(c.shape[1] for c in flat)
+    conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
+    fields = []
+    for per in arrs:
+        a = np.zeros((n_lam, n_sub, deg, n_k))  # [lambda piece, sub, j, k]
+        for p, subs in enumerate(per):
+            for s, c in enumerate(subs):
+                a[p, s, : c.shape[0], : c.shape[1]] = c
+        fields.append(np.einsum("ij,psjk->psik", conv, a))
+    blk = np.stack(fields, axis=2)  # [lambda piece, sub, field, degree, k]
+    rows: list[FloatArray | None] = []
+    for p in range(n_lam):
+        if not len(arrs[0][p]):
+            rows.append(None)
+            continue
+        b = blk[p]
+        nz = np.flatnonzero(np.any(b != 0.0, axis=(0, 1, 2)))
+        k = int(nz.max()) + 1 if nz.size else 1
+        rows.append(np.ascontiguousarray(b[..., :k].transpose(2, 3, 0, 1).reshape(deg, k,
+                                                                                   2 * n_sub)))
+    need = np.array([max([c.shape[0] for per in arrs for c in per[p]] or [1])
+                     for p in range(n_lam)])
+    return rows, n_sub, deg, need
+
+
+def history_tables(history: Mapping[tuple[str, str], Any], time_pieces: Sequence[str],
+                   keys: Sequence[str]) -> dict[str, tuple[list[FloatArray | None], int, int,
+                                                          npt.NDArray[np.int_]]]:
+    """``history_rows`` of every time piece of a generated module's HISTORY.
+
+    Parameters
+    ----------
+    history : mapping
+        (time piece, field) -> per lambda piece, per sub-piece, a matrix string.
+    time_pieces : sequence of str
+        The time pieces.
+    keys : sequence of str
+        The two fields, in the order of the pair (real part first).
+
+    Returns
+    -------
+    dict
+        time piece -> ``history_rows``' result.
+    """
+    return {piece: history_rows([history[(piece, k)] for k in keys]) for piece in time_pieces}
+
+
+def line_coefficients(rows: Sequence[FloatArray | None], ip: Index, tl: FloatArray, deg: int,
+                      n_sub: int) -> npt.NDArray[np.complex128]:
+    """[time degree, line * sub-piece], complex: one time piece's monomial coefficients per
+    line (real part field 0's, imaginary part field 1's), sum_k C[j, k, 2 s + field] T_k(x).
+
+    Parameters
+    ----------
+    rows : sequence
+        ``history_rows``' arrays per lambda piece.
+    ip : ndarray of int
+        Each line's lambda piece, sorted (the lines are distinct sorted lambdas), so each
+        piece's lines are one slice: one stacked matrix product per piece present.
+    tl : ndarray
+        T_k(x_lambda) per line, [line, degree] (at least as many degrees as any piece needs).
+    deg, n_sub : int
+        The time piece's degree and sub-piece count.
+
+    Returns
+    -------
+    ndarray of complex128
+    """
+    out = np.zeros((deg, len(ip), 2 * n_sub))
+    for p in np.unique(ip):
+        c = rows[int(p)]
+        if c is None:
+            continue
+        a, b = np.searchsorted(ip, p), np.searchsorted(ip, p, side="right")
+        # one small matrix product per time degree (a stack of them), written straight into
+        # the [degree, line, ...] layout
+        np.matmul(tl[a:b, : c.shape[1]], c, out=out[:, a:b])
+    return out.reshape(deg, -1).view(np.complex128)

@@ -32,19 +32,23 @@ def _message_prefixes(tree: ast.AST) -> list[tuple[int, str]]:
     return out
 
 
-def _exists(name: str, defined: set[str]) -> bool:
+def _exists(name: str, defined: set[str], package: str = "") -> bool:
+    """Whether ``name`` is defined in the raising module, a model, or a module of the package
+    (from the top, or from the raising module's own subpackage ``package``)."""
     if name in defined or name in REGISTRY:
         return True
     head, _, attr = name.rpartition(".")
+    bases = ["zener_sym"] + ([f"zener_sym.{package}"] if package else [])
     for module, attr in ((name, None), (head, attr)):
         if not module:
             continue
-        try:
-            mod = importlib.import_module(f"zener_sym.{module}")
-        except ImportError:
-            continue
-        if attr is None or hasattr(mod, attr):
-            return True
+        for base in bases:
+            try:
+                mod = importlib.import_module(f"{base}.{module}")
+            except ImportError:
+                continue
+            if attr is None or hasattr(mod, attr):
+                return True
     return False
 
 
@@ -54,8 +58,11 @@ def test_messages_name_what_exists():
         tree = ast.parse(path.read_text(encoding="utf-8"))
         defined = {n.name for n in ast.walk(tree)
                    if isinstance(n, (ast.FunctionDef, ast.ClassDef, ast.AsyncFunctionDef))}
+        # derivation/ and generated/ sit inside the package in an installed copy (not in src/)
+        package = ".".join(path.relative_to(SRC).parts[:-1])
         stale += [f"{path.relative_to(SRC)}:{line}: {name!r}"
-                  for line, name in _message_prefixes(tree) if not _exists(name, defined)]
+                  for line, name in _message_prefixes(tree)
+                  if not _exists(name, defined, package)]
     assert not stale, "messages name what does not exist:\n" + "\n".join(stale)
 
 

@@ -25,7 +25,7 @@ def _between_nodes():
     # the pieces in lambda, which carry the history too; the ln(lambda) pieces above LOG_FROM
     # are checked against mpmath in tests/test_exact_large.py
     for a, b in zip(build.LAM_PIECES[:-1], build.LAM_PIECES[1:]):
-        if build.is_log_piece(a):
+        if build.SPEC.kind_of(a) == "log":
             continue
         lam = a + (b - a) * (mids + 1) / 2
         pts += [lam[0], lam[len(lam) // 2], lam[-1], b]

@@ -26,7 +26,7 @@ def _between_nodes():
     pts = [1e-12, 1e-8, 1e-4, 1000.0]
     for a, b in zip(build.LAM_PIECES[:-1], build.LAM_PIECES[1:]):
         m = mids[[0, len(mids) // 2, -1]]
-        if build.is_log_piece(a):
+        if build.SPEC.kind_of(a) == "log":
             pts += list(np.exp(np.log(a) + (np.log(b) - np.log(a)) * (m + 1) / 2))
         else:
             pts += list((np.sqrt(a) + (np.sqrt(b) - np.sqrt(a)) * (m + 1) / 2) ** 2)

@@ -23,7 +23,7 @@ def _off_nodes():
     """One point midway (in ln lambda) between two nodes of each of the first large pieces."""
     pts = []
     for a, b in zip(build.LAM_PIECES[:-1], build.LAM_PIECES[1:]):
-        if build.is_log_piece(a) and b <= 80:
+        if build.SPEC.kind_of(a) == "log" and b <= 80:
             x = np.sort(np.log(build.piece_nodes(a, b)))
             k = len(x) // 3
             pts.append(float(np.exp((x[k] + x[k + 1]) / 2)))

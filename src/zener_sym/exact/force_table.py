@@ -19,7 +19,8 @@ import numpy as np
 import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.cheb_table import Index, SummaryTable, history_tables, line_coefficients
+from ..numerics.cheb_table import (Index, SummaryTable, history_tables, line_coefficients,
+                                   range_mask)
 from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
@@ -64,20 +65,9 @@ def _tables() -> _Tables:
                                        "; integrate instead (backend='scipy')")}
 
 
-def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
-    """Boolean mask: lambda inside the tables' range [LAM_MIN, LAM_MAX].
-
-    Parameters
-    ----------
-    lam : array_like
-        lambda (Eq. 11).
-
-    Returns
-    -------
-    ndarray of bool
-        lam's shape.
-    """
-    return _tables()["summary"].in_range(lam)
+#: Boolean mask: lambda inside the tables' range [LAM_MIN, LAM_MAX].
+in_range = range_mask(lambda: _tables()["summary"], __name__,
+                      "the tables' range [LAM_MIN, LAM_MAX]")
 
 
 def _core(lam: FloatArray) -> tuple[dict[str, FloatArray], Index, FloatArray, FloatArray]:

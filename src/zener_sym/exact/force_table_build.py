@@ -101,20 +101,6 @@ SPEC = TableSpec(pieces=tuple(("log" if a >= LOG_FROM else "sqrt_lam", a, b)
                  check_rtol=CHECK_RTOL, digits=15)
 
 
-def is_log_piece(a: float) -> bool:
-    """True for a lambda piece [a, b] tabulated in ln(lambda) (else in sqrt(lambda)).
-
-    Parameters
-    ----------
-    a : float
-        The piece's lower end.
-
-    Returns
-    -------
-    bool
-    """
-    return a >= LOG_FROM
-
 
 def piece_nodes(a: float, b: float) -> FloatArray:
     """The lambda nodes of the piece [a, b]: Chebyshev points in its variable.
@@ -129,7 +115,7 @@ def piece_nodes(a: float, b: float) -> FloatArray:
     ndarray
         N_LAM nodes.
     """
-    return engine.piece_nodes("log" if is_log_piece(a) else "sqrt_lam", a, b, N_LAM)
+    return engine.piece_nodes(SPEC.kind_of(a), a, b, N_LAM)
 
 
 def node_data(lam: float, log_piece: bool) -> NodeData:
@@ -183,7 +169,7 @@ def build_tables() -> Tables:
         [time degree, lambda degree] matrix; the history's weights; the spec.
     """
     def sample(p: int, lams: FloatArray) -> list[NodeData]:
-        return [node_data(float(x), is_log_piece(LAM_PIECES[p])) for x in lams]
+        return [node_data(float(x), SPEC.kind_of(LAM_PIECES[p]) == "log") for x in lams]
 
     return engine.build_tables(SPEC, sample, [(p, k) for p in TIME_PIECES for k in HISTORY_KEYS],
                                _tb.HISTORY_TRIM, _tb.history_weight)
@@ -273,6 +259,6 @@ def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
     list of str
         Readable lines, one per difference (empty: they agree).
     """
-    logs = [p for p, a in enumerate(LAM_PIECES[:-1]) if is_log_piece(a)]
+    logs = [p for p, (kind, _, _) in enumerate(SPEC.pieces) if kind == "log"]
     return engine.compare(as_tables(stored), as_tables(fresh),
                           _tb.HISTORY_TRIM, skip={"log_tau_p": logs})

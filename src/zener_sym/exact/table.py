@@ -28,7 +28,8 @@ import numpy as np
 import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.cheb_table import Index, SummaryTable, history_tables, line_coefficients
+from ..numerics.cheb_table import (Index, SummaryTable, history_tables, line_coefficients,
+                                   range_mask)
 from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
@@ -87,37 +88,14 @@ def __getattr__(name: str) -> float:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
-    """Boolean mask: lambda inside the summary table's validated range [LAM_MIN, LAM_MAX].
+#: Boolean mask: lambda inside the summary table's validated range [LAM_MIN, LAM_MAX].
+in_range = range_mask(lambda: _tables()["summary"], __name__,
+                      "the summary table's validated range [LAM_MIN, LAM_MAX]")
 
-    Parameters
-    ----------
-    lam : array_like
-        lambda (Eq. 11).
-
-    Returns
-    -------
-    ndarray of bool
-        lam's shape.
-    """
-    return _tables()["summary"].in_range(lam)
-
-
-def history_in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
-    """Boolean mask: lambda inside the history table's range [LAM_MIN, HISTORY_LAM_MAX].
-
-    Parameters
-    ----------
-    lam : array_like
-        lambda (Eq. 11).
-
-    Returns
-    -------
-    ndarray of bool
-        lam's shape.
-    """
-    t = _tables()
-    return t["summary"].in_range(lam, t["HISTORY_LAM_MAX"])
+#: Boolean mask: lambda inside the history table's range [LAM_MIN, HISTORY_LAM_MAX].
+history_in_range = range_mask(lambda: _tables()["summary"], __name__,
+                              "the history table's range [LAM_MIN, HISTORY_LAM_MAX]",
+                              hi=lambda: _tables()["HISTORY_LAM_MAX"])
 
 
 def _core(lam: FloatArray,

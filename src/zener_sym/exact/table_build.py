@@ -285,20 +285,6 @@ def node_history(s: ExactSolution, tau: RealArrayLike) -> tuple[FloatArray, Floa
     return delta, w
 
 
-def is_log_piece(a: float) -> bool:
-    """True for a lambda piece [a, b] tabulated in ln(lambda).
-
-    Parameters
-    ----------
-    a : float
-        The piece's lower end.
-
-    Returns
-    -------
-    bool
-    """
-    return a >= LOG_FROM
-
 
 @functools.cache
 def universal_orbit() -> tuple[ExactSolution, float, float]:
@@ -385,7 +371,7 @@ def piece_nodes(a: float, b: float) -> FloatArray:
     ndarray
         N_LAM nodes.
     """
-    return engine.piece_nodes("log" if is_log_piece(a) else "lam", a, b, N_LAM)
+    return engine.piece_nodes(SPEC.kind_of(a), a, b, N_LAM)
 
 
 def _history_samples(hist: HistoryFunction, tau_dc: float, tau_w0: float, tau_d: float,
@@ -476,7 +462,7 @@ def build_tables() -> Tables:
     """
     def sample(p: int, lams: FloatArray) -> list[NodeData]:
         a, b = LAM_PIECES[p], LAM_PIECES[p + 1]
-        if is_log_piece(a):
+        if SPEC.kind_of(a) == "log":
             return [large_node(float(x), history=b <= HISTORY_TO) for x in lams]
         return [node_data(float(x)) for x in lams]
 

@@ -18,7 +18,7 @@ evaluated with it.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
 
 import numpy as np
@@ -27,7 +27,7 @@ import numpy.typing as npt
 from ..typing import FloatArray, RealArrayLike
 from .chebyshev import cheb_to_monomial
 
-__all__ = ["PIECE_KINDS", "TableSpec", "Pieces", "SummaryTable", "parse_array", "history_rows",
+__all__ = ["PIECE_KINDS", "TableSpec", "Pieces", "SummaryTable", "range_mask", "parse_array", "history_rows",
            "history_tables", "line_coefficients", "spec_assignments", "spec_of", "WrittenConstants"]
 
 #: The Chebyshev variable g of a lambda piece [start, end], by kind.
@@ -122,6 +122,30 @@ class TableSpec:
     def edges(self) -> tuple[float, ...]:
         """The breakpoints: every piece's start and the last piece's end."""
         return (*(float(a) for _, a, _ in self.pieces), float(self.pieces[-1][2]))
+
+    def kind_of(self, start: float) -> str:
+        """The kind of Chebyshev variable of the piece that starts at ``start``.
+
+        Parameters
+        ----------
+        start : float
+            A piece's lower end (one of :attr:`edges` but the last).
+
+        Returns
+        -------
+        str
+            One of :data:`PIECE_KINDS`.
+
+        Raises
+        ------
+        ValueError
+            When no piece starts there.
+        """
+        for kind, a, _ in self.pieces:
+            if float(a) == float(start):
+                return kind
+        raise ValueError(f"no piece starts at {start!r}; the pieces start at "
+                         f"{', '.join(repr(float(a)) for _, a, _ in self.pieces)}")
 
 
 def spec_assignments(spec: TableSpec) -> list[str]:
@@ -513,3 +537,35 @@ def line_coefficients(rows: Sequence[FloatArray | None], ip: Index, tl: FloatArr
         # the [degree, line, ...] layout
         np.matmul(tl[a:b, : c.shape[1]], c, out=out[:, a:b])
     return out.reshape(deg, -1).view(np.complex128)
+
+
+def range_mask(table: Callable[[], SummaryTable], module: str, what: str,
+               hi: Callable[[], float] | None = None
+               ) -> Callable[[RealArrayLike], npt.NDArray[np.bool_]]:
+    """A table module's ``in_range(lam)``: the mask of lambda inside ``table()``'s range (up to
+    ``hi()`` when given), named and documented as a function of ``module``.
+
+    Parameters
+    ----------
+    table : callable
+        Returns the module's (lazily loaded) :class:`SummaryTable`.
+    module : str
+        The module the function belongs to (its ``__module__``).
+    what : str
+        The range in words, for the docstring.
+    hi : callable, optional
+        Returns another upper end (the history's).
+
+    Returns
+    -------
+    callable
+        ``in_range(lam) -> ndarray of bool``.
+    """
+    def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+        return table().in_range(lam, None if hi is None else hi())
+
+    in_range.__module__ = module
+    in_range.__doc__ = (f"Boolean mask: lambda inside {what}.\n\n    Parameters\n    ----------\n"
+                        "    lam : array_like\n        lambda (Eq. 11).\n\n    Returns\n"
+                        "    -------\n    ndarray of bool\n        lam's shape.\n    ")
+    return in_range

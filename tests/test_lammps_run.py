@@ -30,9 +30,12 @@ def _from_cli(capsys, *argv):
 
 
 def _run(session, setup_json, c, row, end, steps, phase=0.5):
-    """One LAMMPS run with the damping coefficient printed by the CLI (the line's own number)."""
+    """One LAMMPS run with the lines the CLI printed: the runner's deck carries these very lines
+    (checked here character for character), with the damping coefficient read from them."""
     line = setup_json.get("fix_wall") or setup_json["pair_coeff"]
     eta = float(line.split()[line.split().index("hertz/material") + 2])
+    key = "fix_wall" if "fix_wall" in setup_json else "pair_coeff"
+    assert lr.input_lines(c, eta, end)[key] == line
     t_c = row["contact_time_s"]
     return lr.collide(session, c, eta, end, row["v_m_s"], t_c / steps, t_c, phase=phase,
                       e_exact=row["e"])

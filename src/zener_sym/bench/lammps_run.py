@@ -34,7 +34,7 @@ import numpy as np
 from ..scene.lammps import LammpsContact, input_lines
 
 __all__ = ["LammpsMissing", "load", "available", "Collision", "collide", "Session",
-           "STATUSES"]
+           "STATUSES", "input_lines"]
 
 #: How a run can end: the collision as it should be, or how LAMMPS lost it.
 STATUSES = ("ok", "e off >10%", "energy gain", "missed contact", "blow-up")

@@ -15,6 +15,7 @@ import zener_sym as zs
 from zener_sym.exact import mp as exact_mp
 from zener_sym.exact import table as exact_fast
 from zener_sym.exact import table_build as build
+from zener_sym.numerics import cheb_table_build as engine
 
 FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2", "xi")
 
@@ -24,7 +25,7 @@ def _off_nodes():
     pts = []
     for a, b in zip(build.LAM_PIECES[:-1], build.LAM_PIECES[1:]):
         if build.SPEC.kind_of(a) == "log" and b <= 80:
-            x = np.sort(np.log(build.piece_nodes(a, b)))
+            x = np.sort(np.log(engine.piece_nodes("log", a, b, build.N_LAM)))
             k = len(x) // 3
             pts.append(float(np.exp((x[k] + x[k + 1]) / 2)))
     return pts

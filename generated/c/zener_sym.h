@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: aaf191bda16bc684
+ * Inputs hash: fe509301857698ff
  * SymPy version: 1.14.0
  */
 #ifndef ZENER_SYM_H

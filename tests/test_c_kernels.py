@@ -20,6 +20,7 @@ from __future__ import annotations
 import ctypes
 import math
 import pathlib
+import re
 import shutil
 import subprocess
 
@@ -734,3 +735,69 @@ def test_bench_driver_runs(tmp_path):
                        text=True, check=True)
     vals = [float(x) for x in r.stdout.split()]
     assert len(vals) == 4 and all(v > 0 for v in vals[:3])
+
+
+# --- one table evaluator in C: a new table is a configuration ------------------------------------
+#: A table the package does not ship: three fields (the runtime's any-count sum; the shipped
+#: tables have 6 and 8) on one lambda piece of every kind of Chebyshev variable.
+TOY_PIECES = (("lam", 0.0, 2.0), ("sqrt", 2.0, 3.0), ("sqrt_lam", 3.0, 5.0), ("log", 5.0, 400.0))
+
+
+def _toy_fields(lam):
+    lam = np.asarray(lam, dtype=float)
+    s = np.sqrt(np.maximum(lam - 2.0, 0.0))
+    return {"a": np.log1p(lam), "b": 1.0 / (1.0 + lam / 10.0),
+            "c": np.where(lam < 2.0, lam**2, 4.0 + s**3)}
+
+
+def test_a_new_table_is_a_configuration_in_c(tmp_path):
+    """A table built from a configuration by the Python engine, emitted by the C emitter
+    (``codegen.c.tables.summary_c``) and evaluated by the runtime's one evaluator ``zs__eval``
+    compiled with the shipped tables: in order (a history's mode) the same doubles as Python's
+    ``SummaryTable.values``; in a summary's mode (other dependency chains) within a few ulps of
+    each series' scale; and
+    both within the fit's accuracy of the closed forms the table was built from."""
+    from zener_sym.codegen.c import build_source
+    from zener_sym.codegen.c.tables import summary_c
+    from zener_sym.numerics import cheb_table_build as engine
+    from zener_sym.numerics.cheb_table import SummaryTable, TableSpec
+
+    spec = TableSpec(pieces=TOY_PIECES, fields=("a", "b", "c"), nodes=(30, 30, 30, 40),
+                     trim=1e-15, check_rtol=1e-12)
+    built = engine.build_tables(spec, lambda p, lam: [
+        {k: float(v) for k, v in _toy_fields(x).items()} for x in lam])
+    text, init, deg = summary_c("zs__toy", {"TABLE_PIECES": spec.pieces,
+                                            "SUMMARY": built["summary"]}, spec.fields)
+    lam = np.concatenate([np.linspace(0.0, 400.0, 801), [2.0, 2.0 + 1e-12, 3.0, 5.0],
+                          np.random.default_rng(7).uniform(0, 6, 200)])
+    driver = (text + f"static const zs__sumtab zs__toy = {init};\n"
+              "#include <stdio.h>\nint main(void)\n{\n    double lam, v[3], x;\n    int o;\n"
+              "    while (scanf(\"%lf\", &lam) == 1)\n        for (o = 1; o >= 0; o--) {\n"
+              "            zs__eval(&zs__toy, lam, zs__toy.pieces.n - 1, o, v, &x);\n"
+              "            printf(\"%a %a %a\\n\", v[0], v[1], v[2]);\n        }\n"
+              "    return 0;\n}\n")
+    src = tmp_path / "toy.c"
+    # the runtime's buffers sized for every table, this one too (what build_source does for
+    # a table it emits)
+    shipped = build_source()
+    top = int(re.search(r"#define ZS__MAX_SUM (\d+)", shipped).group(1))
+    assert deg > top  # the toy's log piece is longer than any shipped series: the sizing matters
+    src.write_text(shipped.replace(f"#define ZS__MAX_SUM {top} ", f"#define ZS__MAX_SUM {deg} ")
+                   + driver, encoding="utf-8")
+    _compile([CC, *STRICT, "-Wno-unused-function", "-O2", f"-I{C_DIR}", str(src), "-o",
+              str(tmp_path / "toy"), "-lm"], tmp_path)
+    run = subprocess.run([str(tmp_path / "toy")], input="\n".join(repr(float(x)) for x in lam),
+                         capture_output=True, text=True, check=True)
+    got = np.array([[float.fromhex(w) for w in line.split()] for line in run.stdout.splitlines()])
+    in_order, summary_mode = got[0::2], got[1::2]
+    py, _, _, _ = SummaryTable(spec.pieces, spec.fields, built["summary"], "toy").values(lam)
+    want = np.column_stack([py[k] for k in spec.fields])
+    np.testing.assert_array_equal(in_order, want)
+    # the summary's chains: a few ulps of each series' scale (its largest value)
+    scale = np.abs(want).max(axis=0)
+    assert np.all(np.abs(summary_mode - want) <= 4e-15 * scale), np.abs(summary_mode - want).max(
+        axis=0) / scale
+    exact = _toy_fields(lam)
+    for j, k in enumerate(spec.fields):
+        np.testing.assert_allclose(in_order[:, j], exact[k], rtol=1e-12,
+                                   atol=1e-13 * np.abs(exact[k]).max())

@@ -4,7 +4,7 @@
  * the tables and regenerate; `zener-sym generate --check` fails when this file is stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: a7c19c9a7658193c
+ * Inputs hash: 0c67f5357b804e9f
  * SymPy version: 1.14.0
  */
 #ifndef ZENER_SYM_H

@@ -106,19 +106,21 @@ def build_source() -> str:
     switch += ["    default:\n        return NULL; /* no table (yet) for this end of contact */",
                "    }"]
     fswitch = ["    switch (contact_end) {"]
-    fdeg = 2
     for name, macro, fname in FORCE_TABLES:
         text, sz = _tables.force_table_c(name, _tables.load(gen / fname))
         data.append(text)
-        fdeg = max(fdeg, sz["max_sum"])
         sizes = {k: max(sizes[k], sz[k]) for k in sizes}
         fswitch.append(f"    case {macro}:\n        return &zs__ftab_{name};")
     fswitch += ["    default:\n        return NULL;", "    }"]
     h1, h1_deg = _tables.ham1_table_c(_tables.load(gen / HAM1_TABLE))
     types = _rt.TYPES
+    enums = "".join(_tables.field_enum(tag, keys) for tag, keys in (
+        ("X", _tables.EXACT_SUMMARY_KEYS), ("F", _tables.FORCE_SUMMARY_KEYS),
+        ("H", _tables.HAM1_KEYS)))
     for key, val in (("MAX_SUB", sizes["max_sub"]), ("MAX_ROWS", sizes["max_rows"]),
-                     ("MAX_LAMDEG", sizes["max_lamdeg"]), ("MAX_SUM", sizes["max_sum"]),
-                     ("MAX_H1", h1_deg), ("MAX_FSUM", fdeg)):
+                     ("MAX_LAMDEG", sizes["max_lamdeg"]),
+                     ("MAX_SUM", max(sizes["max_sum"], h1_deg)),
+                     ("MAX_NF", _tables.MAX_FIELDS), ("FIELDS", enums)):
         types = types.replace(f"@{key}@", str(val))
     runtime = _rt.RUNTIME
     for slot, text in (("TABLE_SWITCH", "\n".join(switch)), ("FORCE_SWITCH", "\n".join(fswitch)),

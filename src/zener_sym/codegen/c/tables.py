@@ -28,6 +28,8 @@ EXACT_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest
 TIME_PIECES = ("C", "A", "M", "B")
 #: ham1 table fields, in the C code's order.
 HAM1_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
+#: Fields a summary table may have in C (ZS__MAX_NF of types.c.in).
+MAX_FIELDS = 16
 
 
 def load(path: str | os.PathLike[str]) -> dict[str, Any]:
@@ -110,15 +112,12 @@ def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     log_from = float(ns["LOG_FROM"])
     hist_to = float(ns["HISTORY_TO"])
     p = f"zs__{name}"
-    text, ga, gb = pieces_c(p, pieces)
-    out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n", text,
-           # x = g k - o, a summary's piece variable without a division (IEEE operations on the
-           # written doubles: the same on every machine)
-           _array(f"{p}_xk", [2.0 / (b - a) for a, b in zip(ga, gb)]),
-           _array(f"{p}_xo", [(a + b) / (b - a) for a, b in zip(ga, gb)])]
-    # summary: per lambda piece, its fields' Chebyshev coefficients interleaved
+    out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n"]
     sizes = {"max_lamdeg": 0, "max_rows": 0, "max_sub": 0, "max_sum": 0}
-    sizes["max_sum"] = _summary_blocks(p, ns, EXACT_SUMMARY_KEYS, n_lam, out)
+    # x = g k - o, a summary's piece variable without a division (IEEE operations on the
+    # written doubles: the same on every machine)
+    summary, init, sizes["max_sum"] = summary_c(p, ns, EXACT_SUMMARY_KEYS, fold_x=True)
+    out.append(summary)
     # history: per time piece and field, per lambda piece and sub-piece, a [rows][cols] matrix
     n_hist = sum(1 for b in edges[1:] if b <= hist_to)
     tpieces = _history_c(name, p, ns, TIME_PIECES, ("f", "I"), n_lam, out, sizes)
@@ -126,34 +125,74 @@ def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
         sizes[key] = max(sizes[key], 2)
     out.append(
         f"static const zs__exact_table zs__tab_{name} = {{\n"
-        f"    {_pieces_init(p, n_lam)}, {n_hist}, {p}_xk, {p}_xo,\n"
-        f"    {num(edges[0])}, {num(edges[-1])}, {num(hist_to)},\n"
+        f"    {init},\n    {n_hist}, {num(hist_to)},\n"
         f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
         f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"
-        f"    {p}_sum, {p}_sum_len,\n"
         f"    {{{', '.join(tpieces)}}}\n}};\n\n")
     return "".join(out), sizes
 
 
-def _summary_blocks(p: str, ns: dict[str, Any], keys: Sequence[str], n_lam: int,
-                    out: list[str]) -> int:
-    """Append per lambda piece one block [degree][field] of the summary series ``keys``
-    (interleaved, each zero-padded to the piece's longest: a padded term adds an exact 0, so
-    each field's sum in order of degree is unchanged), the arrays ``<p>_sum`` (their pointers)
-    and ``<p>_sum_len`` (their degrees); return the largest degree. The C loop over degrees then
-    carries every field's sum at once (independent additions the processor overlaps)."""
+def summary_c(p: str, ns: dict[str, Any], keys: Sequence[str], fold_x: bool = False,
+              summary_name: str = "SUMMARY") -> tuple[str, str, int]:
+    """C text of a table's summary series as the one ``zs__sumtab`` shape every table has
+    (evaluated by the runtime's ``zs__eval``): its arrays, the ``zs__sumtab`` initialiser that
+    points to them, and its largest degree.
+
+    Per lambda piece one block [degree][field] of the series ``keys`` (interleaved, each
+    zero-padded to the piece's longest: a padded term adds an exact 0, so each field's sum in
+    order of degree is unchanged), then the arrays ``<p>_sum`` (their pointers) and
+    ``<p>_sum_len`` (their degrees). The C loop over degrees then carries every field's sum at
+    once (independent additions the processor overlaps).
+
+    Parameters
+    ----------
+    p : str
+        The C name of the table (a prefix of its arrays).
+    ns : dict
+        The generated table module's names: ``TABLE_PIECES`` and the series.
+    keys : sequence of str
+        The fields, in the order the C code reads them (``field_enum``).
+    fold_x : bool
+        Also write x = g xk - xo per piece (a summary's variable without a division).
+    summary_name : str
+        The name the module assigns its series to.
+
+    Returns
+    -------
+    tuple
+        The C text of the arrays, the initialiser and the largest degree.
+    """
+    if not 0 < len(keys) <= MAX_FIELDS:
+        raise ValueError(f"table {p}: {len(keys)} fields; the C runtime sums 1 to {MAX_FIELDS}")
+    pieces = ns["TABLE_PIECES"]
+    n_lam = len(pieces)
+    text, ga, gb = pieces_c(p, pieces)
+    out = [text]
     ptrs, lens, top = [], [], 0
     for ip in range(n_lam):
-        cs = [list(ns["SUMMARY"][key][ip]) for key in keys]
+        cs = [list(ns[summary_name][key][ip]) for key in keys]
         deg = max(len(c) for c in cs)
         vals = [c[j] if j < len(c) else 0.0 for j in range(deg) for c in cs]
         out.append(_array(f"{p}_s{ip}", vals, per_line=len(keys)))
         ptrs.append(f"{p}_s{ip}")
         lens.append(str(deg))
         top = max(top, deg)
+    fold = "NULL, NULL"
+    if fold_x:
+        out += [_array(f"{p}_xk", [2.0 / (b - a) for a, b in zip(ga, gb)]),
+                _array(f"{p}_xo", [(a + b) / (b - a) for a, b in zip(ga, gb)])]
+        fold = f"{p}_xk, {p}_xo"
     out.append(f"static const double *const {p}_sum[{n_lam}] = {{{', '.join(ptrs)}}};\n"
                f"static const int {p}_sum_len[{n_lam}] = {{{', '.join(lens)}}};\n")
-    return top
+    init = f"{{{_pieces_init(p, n_lam)}, {len(keys)}, {fold}, {p}_sum, {p}_sum_len}}"
+    return "".join(out), init, top
+
+
+def field_enum(tag: str, keys: Sequence[str]) -> str:
+    """``enum { ZS__<tag>_<FIELD>, ..., ZS__N<tag> }``: the positions of a table's fields in its
+    summary blocks (``summary_c``'s ``keys``), by which the runtime reads them."""
+    names = [f"ZS__{tag}_{k.upper()}" for k in keys] + [f"ZS__N{tag}"]
+    return "enum {\n    " + ",\n    ".join(names) + "\n};\n"
 
 
 def _cheb_to_monomial_exact(n: int) -> list[list[Fraction]]:
@@ -250,25 +289,11 @@ def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], key
     return pieces_c
 
 def ham1_table_c(ns: dict[str, Any]) -> tuple[str, int]:
-    """C text of the ham1 summary table (``zs__h1_*``), and its largest degree."""
-    pieces = ns["TABLE_PIECES"]
-    text, _, _ = pieces_c("zs__h1", pieces)
-    out = ["/* ---- ham1 summary table ---- */\n", text]
-    ptrs, lens = [], []
-    deg = 0
-    for ip in range(len(pieces)):
-        for key in HAM1_KEYS:
-            c = ns["COEF"][key][ip]
-            out.append(_array(f"zs__h1_{ip}_{key}", c))
-            ptrs.append(f"zs__h1_{ip}_{key}")
-            lens.append(str(len(c)))
-            deg = max(deg, len(c))
-    n = len(pieces)
-    out.append(f"static const zs__pieces zs__h1_pieces = {_pieces_init('zs__h1', n)};\n")
-    out.append(f"static const double *const zs__h1_coef[{len(ptrs)}] = {{{', '.join(ptrs)}}};\n")
-    out.append(f"static const int zs__h1_len[{len(lens)}] = {{{', '.join(lens)}}};\n")
-    out.append(f"#define ZS__H1_PIECES {n}\n#define ZS__H1_TOP {num(float(pieces[-1][2]))}\n\n")
-    return "".join(out), deg
+    """C text of the ham1 summary table (``static const zs__sumtab zs__h1``), and its largest
+    degree."""
+    text, init, deg = summary_c("zs__h1", ns, HAM1_KEYS, summary_name="COEF")
+    return ("/* ---- ham1 summary table ---- */\n" + text
+            + f"static const zs__sumtab zs__h1 = {init};\n\n"), deg
 
 
 #: Summary fields of a force-free-end table the C code reads (zs__F_* order).
@@ -292,17 +317,12 @@ def force_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
     if missing:
         raise ValueError(f"force table {name}: summary keys {missing} missing")
-    pieces = ns["TABLE_PIECES"]
-    n_lam = len(pieces)
-    edges = [float(a) for _, a, _ in pieces] + [float(pieces[-1][2])]
+    n_lam = len(ns["TABLE_PIECES"])
     p = f"zs__f{name}"
-    text, _, _ = pieces_c(p, pieces)
-    out = [f"/* ---- force-free-end summary table '{name}' ---- */\n", text]
-    sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": 2}
-    sizes["max_sum"] = max(2, _summary_blocks(p, ns, FORCE_SUMMARY_KEYS, n_lam, out))
+    summary, init, deg = summary_c(p, ns, FORCE_SUMMARY_KEYS)
+    out = [f"/* ---- force-free-end summary table '{name}' ---- */\n", summary]
+    sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": max(2, deg)}
     tpieces = _history_c(name, p, ns, FORCE_TIME_PIECES, FORCE_HISTORY_KEYS, n_lam, out, sizes)
     out.append(f"static const zs__force_table zs__ftab_{name} = {{\n"
-               f"    {_pieces_init(p, n_lam)}, {num(edges[0])}, "
-               f"{num(edges[-1])}, {p}_sum, {p}_sum_len,\n"
-               f"    {{{', '.join(tpieces)}}}\n}};\n\n")
+               f"    {init},\n    {{{', '.join(tpieces)}}}\n}};\n\n")
     return "".join(out), sizes

@@ -1,4 +1,4 @@
-"""Code emitted by ``zener-sym generate`` from ``zener_sym.derivation``. Never edit by hand.
+"""Code emitted by ``zener-sym regen kernels`` from ``zener_sym.derivation``. Never edit by hand.
 
 Installed as ``zener_sym.generated``.
 """

@@ -1,6 +1,7 @@
 """The package's imports run one way: no cycle, and no layer imports a layer above it. No
-function in src/ is longer than MAX_LINES lines of code, and each shared primitive is defined
-once.
+function in src/ is longer than MAX_LINES lines of code (no C function of the runtime longer than
+C_MAX_LINES), each shared primitive is defined once, and the table modules (and the C runtime's
+functions) repeat no block of each other.
 
 The imports are read from the source with ``ast`` (nothing is imported): module-level and
 function-level ``import``/``from ... import`` statements, and ``importlib.import_module`` calls
@@ -11,6 +12,7 @@ from __future__ import annotations
 import ast
 import io
 import pathlib
+import re
 import tokenize
 
 import pytest
@@ -398,3 +400,101 @@ def test_the_copy_checks_can_fail():
         "zener_sym.exact.fake._horner (defined in zener_sym.numerics.taylor)"]
     assert horner_loops(text) == [4]
     assert copies({"zener_sym.numerics.taylor": text}) == []
+
+
+
+# --- one table engine: no repeated block between the table modules, or in the C runtime --------
+#: The modules of the three tables (runtime and builder): what they share lives in the engine
+#: (numerics.cheb_table, numerics.cheb_table_build), so no run of RUN lines stands in two of them.
+TABLE_MODULES = ("zener_sym.exact.table", "zener_sym.exact.force_table", "zener_sym.ham.table",
+                 "zener_sym.exact.table_build", "zener_sym.exact.force_table_build",
+                 "zener_sym.ham.table_build", "zener_sym.numerics.cheb_table",
+                 "zener_sym.numerics.cheb_table_build")
+#: Lines in a run that counts as a repeated block.
+RUN = 6
+#: The C runtime's templates (codegen/c).
+C_DIR = ROOT / "src" / "zener_sym" / "codegen" / "c"
+#: No C function of the runtime longer than this many lines (issue 32).
+C_MAX_LINES = 100
+
+
+def code_lines(text: str, comment: str = "#") -> list[tuple[int, str]]:
+    """(line number, line with its white space folded) of each line that is code: blank lines,
+    comments, lone punctuation and imports left out."""
+    out = []
+    for no, line in enumerate(text.splitlines(), 1):
+        s = " ".join(line.split())
+        if (not s or s.startswith((comment, "import ", "from ", '"""', "/*", "*")) or
+                not any(ch.isalnum() for ch in s)):
+            continue
+        out.append((no, s))
+    return out
+
+
+def shared_runs(texts: dict[str, str], n: int = RUN, comment: str = "#") -> list[str]:
+    """Each run of ``n`` consecutive code lines that stands in two places (two texts, or twice
+    in one), as "a:line ~ b:line"."""
+    seen: dict[tuple[str, ...], tuple[str, int]] = {}
+    found = []
+    for name, text in texts.items():
+        lines = code_lines(text, comment)
+        for i in range(len(lines) - n + 1):
+            key = tuple(s for _, s in lines[i:i + n])
+            here = (name, lines[i][0])
+            if key in seen and seen[key][0] != name or key in seen and here[1] - seen[key][1] >= n:
+                found.append(f"{seen[key][0]}:{seen[key][1]} ~ {name}:{here[1]}")
+            seen.setdefault(key, here)
+    return found
+
+
+def c_functions(text: str) -> dict[str, str]:
+    """The functions (and function-like macros' bodies) of a C text: name -> lines, from a line
+    that opens a definition at column 0 to the closing brace at column 0."""
+    out, name, body = {}, None, []
+    for line in text.splitlines():
+        m = re.match(r"(?:static |ZS__NOINLINE )*[a-z_][\w *]*?\b(\w+)\(", line)
+        if name is None and m and not line.rstrip().endswith(";"):
+            name, body = m.group(1), [line]
+            continue
+        if name is not None:
+            body.append(line)
+            if line.startswith("}"):
+                out[name] = "\n".join(body)
+                name = None
+    return out
+
+
+def test_table_modules_repeat_no_block():
+    texts = {m: SOURCES[m] for m in TABLE_MODULES}
+    runs = shared_runs(texts)
+    assert not runs, "repeated blocks between the table modules:\n" + "\n".join(runs)
+
+
+def test_c_runtime_repeats_no_block_and_has_short_functions():
+    text = "\n".join((C_DIR / n).read_text(encoding="utf-8") for n in ("types.c.in",
+                                                                        "runtime.c.in"))
+    runs = shared_runs({"runtime": text}, comment="//")
+    assert not runs, "repeated blocks in the C runtime:\n" + "\n".join(runs)
+    funcs = c_functions(text)
+    assert {"zs__eval", "zs_history", "zs_summary"} <= set(funcs), sorted(funcs)
+    long = {f: b.count("\n") + 1 for f, b in funcs.items() if b.count("\n") + 1 > C_MAX_LINES}
+    assert not long, long
+
+
+def test_c_runtime_has_one_table_evaluator():
+    """One function evaluates a table's series (zs__eval: piece, variable, T_k, sum); the rest
+    call it."""
+    funcs = c_functions((C_DIR / "runtime.c.in").read_text(encoding="utf-8"))
+    sums = sorted(f for f, b in funcs.items() if "zs__cheb_T(" in b and "zs__sum" in b)
+    assert sums == ["zs__eval"], sums
+    assert not [f for f, b in funcs.items() if "acos(" in b], "a second Chebyshev basis"
+
+
+def test_the_block_checks_can_fail():
+    block = "".join(f"x{i} = f(y{i})\n" for i in range(RUN))
+    assert shared_runs({"a": "a = 1\n" + block, "b": block + "b = 2\n"}) == ["a:2 ~ b:1"]
+    assert shared_runs({"a": block + "z = 0\n" + block}) == ["a:1 ~ a:8"]
+    assert shared_runs({"a": block, "b": block.replace("x3", "w3")}) == []
+    c = "static int zs__f(int a)\n{\n    return a;\n}\nint zs_g(void);\nint zs_g(void)\n{\n}\n"
+    assert c_functions(c) == {"zs__f": "static int zs__f(int a)\n{\n    return a;\n}",
+                              "zs_g": "int zs_g(void)\n{\n}"}

@@ -20,6 +20,7 @@ import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
 from ..numerics.cheb_table import (Index, SummaryTable, history_tables, line_coefficients,
+                                   derivative_input, log_quantity_function,
                                    range_mask)
 from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
@@ -141,13 +142,7 @@ def summary_derivative(lam: RealArrayLike, field: str = "e") -> FloatArray:
     ValueError
         For an unknown field, lambda = 0, or lambda outside the range or not finite.
     """
-    if not isinstance(field, str) or field not in DERIVATIVE_FIELDS:
-        raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
-                         f"{', '.join(DERIVATIVE_FIELDS)}")
-    lam_in = np.asarray(lam, dtype=float)
-    lam1 = lam_in.reshape(-1)
-    if not np.all(np.isfinite(lam1)):
-        raise ValueError("lambda must be finite")
+    lam_in, lam1 = derivative_input(lam, field, DERIVATIVE_FIELDS)
     if np.any(lam1 == 0.0):
         raise ValueError("d/dlambda at lambda = 0 is not available for contact_end='force': the "
                          "tables' variable is sqrt(lambda) (the fields have lambda^(3/2) terms, "
@@ -169,34 +164,12 @@ def summary_derivative(lam: RealArrayLike, field: str = "e") -> FloatArray:
     return out.reshape(lam_in.shape)
 
 
-def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
-    """(ln q, d ln q / d lambda) from the one series q needs, for :mod:`zener_sym.exact.inverse`.
-
-    Parameters
-    ----------
-    lam : array_like
-        lambda (Eq. 11) in [LAM_MIN, LAM_MAX] (> 0 for xi); flattened.
-    quantity : str
-        "e" (ln e's series), "xi" or "tau_d".
-
-    Returns
-    -------
-    tuple of ndarray
-        ln q and d ln q / d lambda, 1-D.
-
-    Raises
-    ------
-    ValueError
-        For an unknown quantity or lambda outside the tables' range.
-    """
-    lam1 = np.asarray(lam, dtype=float).reshape(-1)
-    key = {"e": "log_e", "tau_d": "log_tau_d", "xi": "xi_over_lam"}.get(quantity)
-    if key is None:
-        raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
-    val, der = _tables()["summary"].one(lam1, key)
-    if quantity == "xi":  # ln xi = ln lambda + ln(xi / lambda)
-        return np.log(lam1) + np.log(val), 1.0 / lam1 + der / val
-    return val, der
+#: (ln q, d ln q / d lambda) for the inverses: e and tau_d from their stored logs, xi =
+#: lambda (xi / lambda)
+log_quantity = log_quantity_function(lambda: _tables()["summary"], __name__,
+                                     {"e": "log_e", "tau_d": "log_tau_d"},
+                                     {"xi": ("xi_over_lam",
+                                             lambda lam, s: np.log(lam) + np.log(s))})
 
 
 def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:

@@ -92,15 +92,9 @@ SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F
 #: The layout written into the generated table (the runtime reads it back from there).
 LAYOUT = ForceLayout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, N_SUB=N_SUB,
                      SUMMARY_KEYS=SUMMARY_KEYS)
-HISTORY_KEYS = LAYOUT.HISTORY_KEYS
-TIME_PIECES = LAYOUT.TIME_PIECES
 #: The table's description for the engine: sqrt(lambda) pieces below LOG_FROM, ln lambda above.
-SPEC = TableSpec(pieces=tuple(("log" if a >= LOG_FROM else "sqrt_lam", a, b)
-                              for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:])),
-                 fields=SUMMARY_KEYS, nodes=(N_LAM,) * (len(LAM_PIECES) - 1), trim=TRIM,
-                 check_rtol=CHECK_RTOL, digits=15)
-
-
+SPEC = TableSpec.on_edges(LAM_PIECES, "sqrt_lam", LOG_FROM, SUMMARY_KEYS, N_LAM, trim=TRIM,
+                          check_rtol=CHECK_RTOL, digits=15)
 
 
 def node_data(lam: float, log_piece: bool) -> NodeData:
@@ -126,7 +120,7 @@ def node_data(lam: float, log_piece: bool) -> NodeData:
     out: NodeData = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
            "log_e": np.log(s.e), "xi_over_lam": s.xi / lam, "log_F_m": np.log(s.F_m),
            "log_int_F2": np.log(s.int_F2), "log_tau_p": 0.0 if log_piece else np.log(tau_p)}
-    for piece in TIME_PIECES:
+    for piece in LAYOUT.TIME_PIECES:
         y = engine.sub_nodes(N_SUB[piece], N_TIME[piece])
         tau = time_of(piece, y, s.tau_dc, s.tau_d, tau_p, log_piece)
         h = s.history(tau.ravel())
@@ -156,7 +150,8 @@ def build_tables() -> Tables:
     def sample(p: int, lams: FloatArray) -> list[NodeData]:
         return [node_data(float(x), SPEC.kind_of(LAM_PIECES[p]) == "log") for x in lams]
 
-    return engine.build_tables(SPEC, sample, [(p, k) for p in TIME_PIECES for k in HISTORY_KEYS],
+    return engine.build_tables(SPEC, sample, [(p, k) for p in LAYOUT.TIME_PIECES
+                                                for k in LAYOUT.HISTORY_KEYS],
                                _tb.HISTORY_TRIM, _tb.history_weight)
 
 
@@ -171,6 +166,19 @@ def input_files() -> list[pathlib.Path]:
     here = pathlib.Path(__file__).resolve().parent
     return [here / name for name in ("force_table_build.py", "force_table_layout.py",
                                      "force_end.py", "solver.py", "phases.py")] + _tb.engine_files()
+
+
+#: The generated module's own words (its description is SPEC).
+FILE = engine.TableFile(
+    "exact_force_table.py", "exact-force-table",
+    title=("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
+           f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}."),
+    provenance=("Built by zener_sym.exact.force_table_build from scipy {scipy} "
+                f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym regen --check "
+                "exact-force-table` rebuilds and compares numerically."),
+    summary_note="stored series -> one tuple of Chebyshev coefficients per lambda piece",
+    history_note=("#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient "
+                  "matrix", *_tb.HISTORY_NOTE[1:]), quantum=_tb.HISTORY_QUANTUM)
 
 
 def render(tables: Tables | None = None) -> str:
@@ -189,27 +197,17 @@ def render(tables: Tables | None = None) -> str:
     import scipy
 
     t = build_tables() if tables is None else tables
-    lines = engine.table_lines(
-        t, SPEC, ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads "
-                  "it back)", *LAYOUT.assignments()],
-        "stored series -> one tuple of Chebyshev coefficients per lambda piece",
-        ("#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
-         *_tb.HISTORY_NOTE[1:]), _tb.HISTORY_QUANTUM)
-    title = ("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
-             f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}.")
-    provenance = (f"Built by zener_sym.exact.force_table_build from scipy {scipy.__version__} "
-                  f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym regen --check "
-                  "exact-force-table` rebuilds and compares numerically.")
-    text: str = table_module(title, "regen exact-force-table", provenance,
-                             inputs_hash(input_files()), lines)
-    return text
+    head = ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads it "
+            "back)", *LAYOUT.assignments()]
+    return table_module(*FILE.words(scipy.__version__), inputs_hash(input_files()),
+                        FILE.body(t, SPEC, head))
 
 
 def table_path() -> pathlib.Path:
     """Where the generated table lives: ``generated/exact_force_table.py``."""
     from ..codegen import generated_dir
 
-    return generated_dir() / "exact_force_table.py"
+    return generated_dir() / FILE.filename
 
 
 def as_tables(t: Mapping[str, Any]) -> Tables:

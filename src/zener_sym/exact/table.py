@@ -29,6 +29,7 @@ import numpy.typing as npt
 
 from ..numerics.blocks import BLOCK, field_buffers
 from ..numerics.cheb_table import (Index, SummaryTable, history_tables, line_coefficients,
+                                   derivative_input, log_quantity_function,
                                    range_mask)
 from ..numerics.chebyshev import horner_take_pair
 from ..typing import FloatArray, RealArrayLike
@@ -186,13 +187,7 @@ def summary_derivative(lam: RealArrayLike, field: str = "e",
     if contact_end != "delta":
         raise ValueError(f"unknown contact_end {contact_end!r}; allowed: 'delta' (the plate) or "
                          f"'force' (the grains' force-free end)")
-    if not isinstance(field, str) or field not in DERIVATIVE_FIELDS:
-        raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
-                         f"{', '.join(DERIVATIVE_FIELDS)}")
-    lam_in = np.asarray(lam, dtype=float)
-    lam1 = lam_in.reshape(-1)
-    if not np.all(np.isfinite(lam1)):
-        raise ValueError("lambda must be finite")
+    lam_in, lam1 = derivative_input(lam, field, DERIVATIVE_FIELDS)
     v, i, x = _core(lam1)
     dv = _tables()["summary"].derivatives(lam1, i, x)  # d(stored series)/d(lambda)
     dv["tau_d"] = v["tau_d"] * dv["log_tau_d"]
@@ -220,37 +215,12 @@ def summary_derivative(lam: RealArrayLike, field: str = "e",
     return out.reshape(lam_in.shape)
 
 
-def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
-    """(ln q, d ln q / d lambda) from the one series q needs, for :mod:`zener_sym.exact.inverse`.
-
-    Parameters
-    ----------
-    lam : array_like
-        lambda (Eq. 11) in [LAM_MIN, LAM_MAX] (> 0 for xi); flattened.
-    quantity : str
-        "e" (from the stored ln e, the form ``summary`` uses where xi >= 1/2), "xi" =
-        2 lambda int_F2 (exact for Eq. 10) or "tau_d".
-
-    Returns
-    -------
-    tuple of ndarray
-        ln q and d ln q / d lambda, 1-D.
-
-    Raises
-    ------
-    ValueError
-        For an unknown quantity or lambda outside the table's range.
-    """
-    lam1 = np.asarray(lam, dtype=float).reshape(-1)
-    one = _tables()["summary"].one
-    if quantity == "e":
-        return one(lam1, "log_e")
-    if quantity == "tau_d":
-        return one(lam1, "log_tau_d")
-    if quantity == "xi":
-        f, df = one(lam1, "int_F2")
-        return np.log(2.0 * lam1 * f), 1.0 / lam1 + df / f
-    raise ValueError(f"unknown quantity {quantity!r}; allowed: e, xi, tau_d")
+#: (ln q, d ln q / d lambda) for the inverses: e and tau_d from their stored logs, xi =
+#: 2 lambda int_F2
+log_quantity = log_quantity_function(lambda: _tables()["summary"], __name__,
+                                     {"e": "log_e", "tau_d": "log_tau_d"},
+                                     {"xi": ("int_F2",
+                                             lambda lam, f: np.log(2.0 * lam * f))})
 
 
 def _scaled_maps(name: str, k: int, lu: FloatArray, log: npt.NDArray[np.bool_],

@@ -142,14 +142,10 @@ HISTORY_NOTE = (
 LAYOUT = Layout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, HISTORY_TO=HISTORY_TO,
                 C_STRETCH=C_STRETCH, C_END=C_END, S_ORBIT=S_ORBIT, S_TRANSIENT=S_TRANSIENT,
                 N_SUB=N_SUB)
-HISTORY_KEYS = LAYOUT.HISTORY_KEYS
-TIME_PIECES = LAYOUT.TIME_PIECES
 #: The table's description for the engine: lambda pieces (in lambda below LOG_FROM, in ln lambda
 #: above), the stored series, points per piece, trimming and ``--check`` tolerance.
-SPEC = TableSpec(pieces=tuple(("log" if a >= LOG_FROM else "lam", a, b)
-                              for a, b in zip(LAM_PIECES[:-1], LAM_PIECES[1:])),
-                 fields=SUMMARY_KEYS, nodes=(N_LAM,) * (len(LAM_PIECES) - 1), trim=TRIM,
-                 check_rtol=CHECK_RTOL, digits=15)
+SPEC = TableSpec.on_edges(LAM_PIECES, "lam", LOG_FROM, SUMMARY_KEYS, N_LAM, trim=TRIM,
+                          check_rtol=CHECK_RTOL, digits=15)
 
 
 def time_nodes(piece: str, y: FloatArray, tau_dc: float, tau_w0: float, tau_d: float,
@@ -285,7 +281,6 @@ def node_history(s: ExactSolution, tau: RealArrayLike) -> tuple[FloatArray, Floa
     return delta, w
 
 
-
 @functools.cache
 def universal_orbit() -> tuple[ExactSolution, float, float]:
     """The universal orbit as the solution at LAM_U, its rest time and C = e lambda^5.
@@ -358,13 +353,12 @@ def large_node(lam: float, history: bool = True) -> NodeData:
     return out
 
 
-
 def _history_samples(hist: HistoryFunction, tau_dc: float, tau_w0: float, tau_d: float,
                      lam: float, log_piece: bool) -> NodeData:
     """{(piece, "f"/"I"): [sub, point]} from hist(tau) -> (delta, w) at the sub-pieces' nodes."""
     tau_s = float(LAYOUT.split_time(lam, log_piece, tau_dc, tau_w0))
     out: NodeData = {}
-    for piece in TIME_PIECES:
+    for piece in LAYOUT.TIME_PIECES:
         if piece == "M" and not log_piece:
             continue
         params = tuple(float(c) for c in LAYOUT.map_params(piece, lam, log_piece, tau_dc, tau_s,
@@ -451,7 +445,8 @@ def build_tables() -> Tables:
             return [large_node(float(x), history=b <= HISTORY_TO) for x in lams]
         return [node_data(float(x)) for x in lams]
 
-    return engine.build_tables(SPEC, sample, [(p, k) for p in TIME_PIECES for k in HISTORY_KEYS],
+    return engine.build_tables(SPEC, sample, [(p, k) for p in LAYOUT.TIME_PIECES
+                                                for k in LAYOUT.HISTORY_KEYS],
                                HISTORY_TRIM, history_weight)
 
 
@@ -481,6 +476,18 @@ def engine_files() -> list[pathlib.Path]:
     return [numerics / "cheb_table.py", numerics / "cheb_table_build.py"]
 
 
+#: The generated module's own words (its description is SPEC).
+FILE = engine.TableFile(
+    "exact_table.py", "exact-table",
+    title=("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
+           f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}."),
+    provenance=("Built by zener_sym.exact.table_build from scipy {scipy} solves at "
+                f"rtol {RTOL:g}; `zener-sym regen --check exact-table` rebuilds and compares "
+                "numerically (the node values come from a floating-point integrator, so the "
+                "bytes are not reproducible across machines)."),
+    history_note=HISTORY_NOTE, quantum=HISTORY_QUANTUM)
+
+
 def render(tables: Tables | None = None) -> str:
     """Text of ``generated/exact_table.py``.
 
@@ -498,27 +505,17 @@ def render(tables: Tables | None = None) -> str:
     import scipy
 
     t = build_tables() if tables is None else tables
-    lines = engine.table_lines(
-        t, SPEC, ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
-                  *LAYOUT.assignments()],
-        "field -> one tuple of Chebyshev coefficients per lambda piece", HISTORY_NOTE,
-        HISTORY_QUANTUM)
-    title = ("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
-             f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}.")
-    provenance = (f"Built by zener_sym.exact.table_build from scipy {scipy.__version__} solves at "
-                  f"rtol {RTOL:g}; `zener-sym regen --check exact-table` rebuilds and compares "
-                  "numerically (the node values come from a floating-point integrator, so the "
-                  "bytes are not reproducible across machines).")
-    text: str = table_module(title, "regen exact-table", provenance, inputs_hash(input_files()),
-                             lines)
-    return text
+    head = ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
+            *LAYOUT.assignments()]
+    return table_module(*FILE.words(scipy.__version__), inputs_hash(input_files()),
+                        FILE.body(t, SPEC, head))
 
 
 def table_path() -> pathlib.Path:
     """Where the generated table lives: ``generated/exact_table.py``."""
     from ..codegen import generated_dir
 
-    return generated_dir() / "exact_table.py"
+    return generated_dir() / FILE.filename
 
 
 def as_tables(t: Mapping[str, Any], spec: TableSpec = SPEC) -> Tables:

@@ -229,6 +229,16 @@ def input_files() -> list[pathlib.Path]:
     return files
 
 
+#: The generated module's own words (its description: ``spec``).
+FILE = engine.TableFile(
+    "ham1_table.py", "ham1-table",
+    title="Chebyshev tables of the first-order HAM summary (Eq. 42) for 0 <= lambda < lam_crit.",
+    provenance=("Built by zener_sym.ham.table_build from the float64 ham1 summary "
+                "(zener_sym.ham.spectral.summary_numpy); `zener-sym regen --check ham1-table` "
+                "rebuilds and compares numerically (the node values come from floating-point "
+                "root finding and quadrature)."), summary_name="COEF")
+
+
 def render(tables: Tables | None = None) -> str:
     """Text of ``generated/ham1_table.py``.
 
@@ -244,20 +254,13 @@ def render(tables: Tables | None = None) -> str:
     """
     t = build_tables() if tables is None else tables
     sp = cast(TableSpec, t["spec"])
-    lines = engine.table_lines(
-        cast(engine.Tables, t), sp,
-        ["#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
-         f"LAM_CONT = {float(sp.pieces[-1][1]):.17g}"],
-        "field -> one tuple of Chebyshev coefficients per lambda piece", summary_name="COEF")
+    head = ["#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
+            f"LAM_CONT = {float(sp.pieces[-1][1]):.17g}"]
     # the pieces under the name the older readers use, after the summary (the description
     # comes first)
-    lines += ["#: (kind, start, end) per lambda piece (TABLE_PIECES)", "PIECES = TABLE_PIECES"]
-    title = "Chebyshev tables of the first-order HAM summary (Eq. 42) for 0 <= lambda < lam_crit."
-    provenance = ("Built by zener_sym.ham.table_build from the float64 ham1 summary "
-                  "(zener_sym.ham.spectral.summary_numpy); `zener-sym regen --check ham1-table` "
-                  "rebuilds and compares numerically (the node values come from floating-point "
-                  "root finding and quadrature).")
-    return table_module(title, "regen ham1-table", provenance, inputs_hash(input_files()), lines)
+    tail = ["#: (kind, start, end) per lambda piece (TABLE_PIECES)", "PIECES = TABLE_PIECES"]
+    return table_module(*FILE.words(), inputs_hash(input_files()),
+                        FILE.body(cast(engine.Tables, t), sp, head, tail))
 
 
 def table_path() -> pathlib.Path:
@@ -270,7 +273,7 @@ def table_path() -> pathlib.Path:
     """
     from ..codegen import generated_dir
 
-    return generated_dir() / "ham1_table.py"
+    return generated_dir() / FILE.filename
 
 
 def as_tables(t: Mapping[str, Any]) -> Tables:

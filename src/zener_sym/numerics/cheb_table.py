@@ -28,7 +28,8 @@ from ..typing import FloatArray, RealArrayLike
 from .chebyshev import cheb_to_monomial
 
 __all__ = ["PIECE_KINDS", "TableSpec", "Pieces", "SummaryTable", "range_mask", "parse_array", "history_rows",
-           "history_tables", "line_coefficients", "spec_assignments", "spec_of", "WrittenConstants"]
+           "history_tables", "line_coefficients", "spec_assignments", "spec_of", "WrittenConstants",
+           "log_quantity_function", "derivative_input"]
 
 #: The Chebyshev variable g of a lambda piece [start, end], by kind.
 PIECE_KINDS = {"lam": "lambda", "log": "ln lambda", "sqrt_lam": "sqrt(lambda)",
@@ -117,6 +118,35 @@ class TableSpec:
                                  f"at {a!r}")
         if len(self.nodes) != len(self.pieces):
             raise ValueError(f"{len(self.nodes)} node counts for {len(self.pieces)} pieces")
+
+    @classmethod
+    def on_edges(cls, edges: Sequence[float], below: str, log_from: float, fields: Sequence[str],
+                 nodes: int, **kw: Any) -> "TableSpec":
+        """A table on the pieces between consecutive ``edges``: in ln lambda from ``log_from`` up,
+        of kind ``below`` under it, each with ``nodes`` points.
+
+        Parameters
+        ----------
+        edges : sequence of float
+            The breakpoints, increasing.
+        below : str
+            The kind of the pieces that start under ``log_from``.
+        log_from : float
+            Pieces that start here or above are ln-lambda pieces.
+        fields : sequence of str
+            The stored series.
+        nodes : int
+            Points per piece.
+        **kw
+            The other attributes (``trim``, ``check_rtol``, ``digits``).
+
+        Returns
+        -------
+        TableSpec
+        """
+        pieces = tuple(("log" if a >= log_from else below, a, b)
+                       for a, b in zip(edges[:-1], edges[1:]))
+        return cls(pieces=pieces, fields=tuple(fields), nodes=(nodes,) * len(pieces), **kw)
 
     @property
     def edges(self) -> tuple[float, ...]:
@@ -569,3 +599,87 @@ def range_mask(table: Callable[[], SummaryTable], module: str, what: str,
                         "    lam : array_like\n        lambda (Eq. 11).\n\n    Returns\n"
                         "    -------\n    ndarray of bool\n        lam's shape.\n    ")
     return in_range
+
+
+def log_quantity_function(table: Callable[[], SummaryTable], module: str,
+                          logs: Mapping[str, str],
+                          products: Mapping[str, tuple[str, Callable[[FloatArray, FloatArray],
+                                                                     FloatArray]]]
+                          ) -> Callable[[RealArrayLike, str], tuple[FloatArray, FloatArray]]:
+    """A table module's ``log_quantity(lam, quantity)``: (ln q, d ln q / d lambda) from the one
+    series q needs (:meth:`SummaryTable.one`: that series and its derivative, not every field),
+    for the inverses (``exact.inverse``).
+
+    Parameters
+    ----------
+    table, module
+        As for :func:`range_mask`.
+    logs : mapping
+        quantity -> the series that stores ln q.
+    products : mapping
+        quantity -> (series s, ln q from lambda and s): q = c lambda s(lambda), so that
+        d ln q / d lambda = 1 / lambda + s' / s (each table keeps the form of ln q its numbers
+        were made with).
+
+    Returns
+    -------
+    callable
+        ``log_quantity(lam, quantity) -> (ln q, d ln q / d lambda)``, 1-D (lam flattened).
+    """
+    allowed = ", ".join([*logs, *products])
+
+    def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
+        lam1 = np.asarray(lam, dtype=float).reshape(-1)
+        if quantity in logs:
+            return table().one(lam1, logs[quantity])
+        if quantity not in products:
+            raise ValueError(f"unknown quantity {quantity!r}; allowed: {allowed}")
+        series, ln_q = products[quantity]
+        s, ds = table().one(lam1, series)
+        return ln_q(lam1, s), 1.0 / lam1 + ds / s
+
+    log_quantity.__module__ = module
+    stored = "; ".join([f"{q} from the stored {k}" for q, k in logs.items()]
+                       + [f"{q} from lambda {k}" for q, (k, _) in products.items()])
+    log_quantity.__doc__ = (
+        "(ln q, d ln q / d lambda) from the one series q needs, for "
+        f":mod:`zener_sym.exact.inverse` ({stored}).\n\n    Parameters\n    ----------\n"
+        "    lam : array_like\n        lambda (Eq. 11) in the table's range (> 0 for a "
+        "product); flattened.\n    quantity : str\n"
+        f"        One of {allowed}.\n\n    Returns\n    -------\n    tuple of ndarray\n"
+        "        ln q and d ln q / d lambda, 1-D.\n\n    Raises\n    ------\n    ValueError\n"
+        "        For an unknown quantity or lambda outside the table's range.\n    ")
+    return log_quantity
+
+
+def derivative_input(lam: RealArrayLike, field: object,
+                     allowed: Sequence[str]) -> tuple[FloatArray, FloatArray]:
+    """A summary derivative's checked input: lambda as given and flattened.
+
+    Parameters
+    ----------
+    lam : array_like
+        lambda.
+    field : object
+        The field asked for.
+    allowed : sequence of str
+        The fields that have a derivative.
+
+    Returns
+    -------
+    tuple of ndarray
+        lambda in its shape, and flattened.
+
+    Raises
+    ------
+    ValueError
+        For a field not in ``allowed`` or a lambda that is not finite.
+    """
+    if not isinstance(field, str) or field not in allowed:
+        raise ValueError(f"unknown summary field {field!r} to differentiate; allowed: "
+                         f"{', '.join(allowed)}")
+    lam_in = np.asarray(lam, dtype=float)
+    lam1 = lam_in.reshape(-1)
+    if not np.all(np.isfinite(lam1)):
+        raise ValueError("lambda must be finite")
+    return lam_in, lam1

@@ -16,6 +16,7 @@ numbers (:func:`stored_tables`) when only its text changes.
 """
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any, TypedDict
 
@@ -25,7 +26,7 @@ from ..typing import FloatArray
 from .cheb_table import Pieces, TableSpec, parse_array, spec_assignments, spec_of
 from .chebyshev import cheb_coefficients, cheb_nodes, coefficient_difference, trim_trailing
 
-__all__ = ["NodeData", "Tables", "piece_nodes", "sub_nodes", "fit", "build_tables",
+__all__ = ["NodeData", "Tables", "TableFile", "piece_nodes", "sub_nodes", "fit", "build_tables",
            "history_coefficients", "format_quantised", "render_summary", "render_history",
            "table_lines",
            "stored_tables", "compare"]
@@ -338,6 +339,52 @@ def table_lines(t: Tables, spec: TableSpec, head: Sequence[str], summary_note: s
         lines += ["", *history_note,
                   *render_history(t["history"], t.get("weights", {}), quantum)]
     return lines
+
+
+@dataclasses.dataclass(frozen=True)
+class TableFile:
+    """A generated table module's own words, beside its :class:`~.cheb_table.TableSpec`: where it
+    lives, the command that rebuilds it, what its docstring and comments say (data: each table
+    of the package is one of these, and a builder's ``render`` writes ``table_module(title,
+    command, provenance, digest, body)`` with them).
+
+    Attributes
+    ----------
+    filename : str
+        The file under generated/.
+    artefact : str
+        Its name for ``zener-sym regen``.
+    title : str
+        The first line of its docstring.
+    provenance : str
+        How its numbers were obtained; ``{scipy}`` stands for scipy's version.
+    summary_note, history_note, quantum, summary_name
+        As for :func:`table_lines`.
+    """
+
+    filename: str
+    artefact: str
+    title: str
+    provenance: str
+    summary_note: str = "field -> one tuple of Chebyshev coefficients per lambda piece"
+    history_note: tuple[str, ...] = ()
+    quantum: float = 0.0
+    summary_name: str = "SUMMARY"
+
+    @property
+    def command(self) -> str:
+        """The ``zener-sym`` sub-command that rebuilds the file."""
+        return f"regen {self.artefact}"
+
+    def words(self, scipy_version: str = "") -> tuple[str, str, str]:
+        """(title, command, provenance) of the module's docstring."""
+        return self.title, self.command, self.provenance.format(scipy=scipy_version)
+
+    def body(self, t: Tables, spec: TableSpec, head: Sequence[str],
+             tail: Sequence[str] = ()) -> list[str]:
+        """The module's lines after its inputs hash: ``head``, :func:`table_lines`, ``tail``."""
+        return [*table_lines(t, spec, head, self.summary_note, self.history_note, self.quantum,
+                             self.summary_name), *tail]
 
 
 def stored_tables(ns: Mapping[str, Any], summary_name: str = "SUMMARY") -> Tables:

@@ -27,8 +27,8 @@ _HEADER = f"""# Paper audit
 
 Every numbered equation (1) to (81), the unnumbered definitions and the numeric claims of the paper
 *{PAPER_TITLE}*, checked against this project's derivation (FORMULAS.md) and the exact solution of
-Zener's equation (10). Written by `zener-sym audit --write`; `zener-sym audit --check` fails when
-this file is stale. Verdicts are computed, never typed in (`src/zener_sym/audit/`).
+Zener's equation (10). Written by `zener-sym regen audit`; `zener-sym regen --check audit` fails
+when this file is stale. Verdicts are computed, never typed in (`src/zener_sym/audit/`).
 
 Each section shows what the paper prints (as the audit reads the transcription, exponents and
 constants exactly as printed), what the derivation gives, the verdict and the evidence:

@@ -15,7 +15,7 @@ from ..scene.materials import Material
 from ..scene.scaling import sphere_mass
 from ..scene.units import si_value
 from ._types import Out, Subparsers
-from .scene import _material, _plot_path
+from .scene import _material, _plot_path, add_sphere_arguments
 
 __all__ = ["add_parser", "run"]
 
@@ -88,16 +88,11 @@ def add_parser(sub: Subparsers) -> None:
     p.add_argument("--data", required=True, metavar="FILE.csv",
                    help="CSV with a speed column and its unit (v0_m_s, 'v0 [cm/s]'), a column e "
                         "and optionally sigma_e; '#' lines are comments")
-    p.add_argument("--sphere", required=True,
-                   help="sphere material: a preset (steel, glass, aluminium) or 'E,nu,rho' with "
-                        "units (9GPa,0.33,917kg/m^3)")
-    p.add_argument("--radius", required=True, help="sphere radius with a unit, e.g. 1mm")
+    add_sphere_arguments(p, second=True, example="9GPa,0.33,917kg/m^3")
     p.add_argument("--mass", default=None,
                    help="sphere mass with a unit (g, kg); default from the radius and density")
     p.add_argument("--wall", default=None,
                    help="the flat wall's material (as --sphere), or 'rigid' (default)")
-    p.add_argument("--sphere2", default=None, help="second sphere's material (default --sphere)")
-    p.add_argument("--radius2", default=None, help="second sphere's radius (default --radius)")
     p.add_argument("--mass2", default=None, help="second sphere's mass (default from density)")
     p.add_argument("--contact-end", dest="contact_end", default="force",
                    choices=("force", "delta"),

@@ -17,7 +17,7 @@ import sys
 
 from ..scene.lammps import lammps_setup
 from ._types import Out, Subparsers
-from .scene import _material
+from .scene import _material, add_sphere_arguments
 
 __all__ = ["add_parser", "run"]
 
@@ -61,12 +61,7 @@ def add_parser(sub: Subparsers) -> None:
     p = sub.add_parser("lammps", help="LAMMPS input (pair_coeff or fix wall/gran, hertz/material "
                        "with viscoelastic damping) for a dissipative constant or a measured e, "
                        "with the exact e, contact time, peak force and timestep per speed")
-    p.add_argument("--sphere", required=True,
-                   help="sphere material: a preset (steel, glass, aluminium) or 'E,nu,rho' with "
-                        "units (9GPa,0.33,917kg/m^3)")
-    p.add_argument("--radius", required=True, help="sphere radius with a unit, e.g. 1mm")
-    p.add_argument("--sphere2", default=None, help="second sphere's material (default --sphere)")
-    p.add_argument("--radius2", default=None, help="second sphere's radius (default --radius)")
+    add_sphere_arguments(p, second=True, example="9GPa,0.33,917kg/m^3")
     p.add_argument("--wall", default=None, help="a flat wall's material (as --sphere) instead of "
                    "a second sphere")
     p.add_argument("--A", dest="A", default=None, metavar="TIME",

@@ -18,7 +18,8 @@ if TYPE_CHECKING:
 
     from ..scene.scene import Scene, SceneResult
 
-__all__ = ["add_parser", "run", "plot_force", "scene_from_args", "add_scene_arguments"]
+__all__ = ["add_parser", "run", "plot_force", "scene_from_args", "add_scene_arguments",
+           "add_sphere_arguments"]
 
 
 def _number(text: str, field: str) -> float:
@@ -125,13 +126,24 @@ def run(args: argparse.Namespace, out: Out = print) -> int:
     return 0
 
 
-def add_scene_arguments(p: argparse.ArgumentParser, required: bool = True) -> None:
-    """The options that describe a scene (shared by ``scene`` and ``compare``)."""
+def add_sphere_arguments(p: argparse.ArgumentParser, required: bool = True,
+                         second: bool = False, example: str = "210GPa,0.3,7850kg/m^3") -> None:
+    """``--sphere`` and ``--radius`` (with ``second``, ``--sphere2`` and ``--radius2`` too): a
+    sphere's material and radius, under the names of every command that takes a sphere."""
     p.add_argument("--sphere", required=required,
                    help=f"sphere material: {', '.join(PRESETS)} or 'E,nu,rho' with units "
-                        "(210GPa,0.3,7850kg/m^3)")
-    p.add_argument("--plate", required=required, help="plate material (as --sphere)")
+                        f"({example})")
     p.add_argument("--radius", required=required, help="sphere radius with a unit, e.g. 1mm")
+    if second:
+        p.add_argument("--sphere2", default=None,
+                       help="second sphere's material (default --sphere)")
+        p.add_argument("--radius2", default=None, help="second sphere's radius (default --radius)")
+
+
+def add_scene_arguments(p: argparse.ArgumentParser, required: bool = True) -> None:
+    """The options that describe a scene (shared by ``scene`` and ``compare``)."""
+    add_sphere_arguments(p, required)
+    p.add_argument("--plate", required=required, help="plate material (as --sphere)")
     p.add_argument("--thickness", required=required, help="plate thickness with a unit, e.g. 2mm")
     speed = p.add_mutually_exclusive_group()
     speed.add_argument("--v0", default=None, help="impact speed with a unit, e.g. 1m/s")

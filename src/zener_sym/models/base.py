@@ -158,7 +158,7 @@ class Model:
 
 class computed_bound:
     """A model's ``lam_bound`` computed when first read, for a bound that cannot be known when
-    the model registers (from a generated module, which ``zener-sym generate`` must be able to
+    the model registers (from a generated module, which ``zener-sym regen kernels`` must be able to
     rewrite when it is broken, or from another model's result). Used like ``property``, and
     read-only like it.
 

@@ -32,7 +32,7 @@ _BLOCK = 16384
 def _gen(name: str) -> types.SimpleNamespace:
     """The HAM kernels ``name`` ("ham0_numpy", "ham1_mpmath", ...: ``ham0``/``ham1`` of
     ``zener_sym.ham.runtime_numpy`` or ``runtime_mpmath``, namespaces of functions), imported
-    on first use: ``zener-sym generate`` must run (and rewrite generated/) even when the
+    on first use: ``zener-sym regen kernels`` must run (and rewrite generated/) even when the
     committed kernels are stale or broken."""
     import importlib
 

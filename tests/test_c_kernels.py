@@ -556,6 +556,16 @@ def test_ham1_summary_matches_python(lib):
         py = PY["api"].summary(float(lam), model="ham1")
         for f in FIELDS:
             assert c[f] == pytest.approx(float(getattr(py, f)), rel=1e-12, abs=1e-300), (lam, f)
+    # the one table evaluator: the stored fields are Python's to the last bit (zs__eval in order
+    # of degree, as numerics.cheb_table.SummaryTable)
+    from zener_sym.ham import table as ham1_table
+
+    lams = np.concatenate([np.linspace(0.0, 2.44, 301), _ham_lams()])
+    py = ham1_table.summary(lams)
+    got = np.array([[c_summary(lib, float(lam), ham1=True)[1][f]
+                     for f in ("delta_m", "tau_dc", "impulse", "int_F2")] for lam in lams])
+    for j, f in enumerate(("delta_m", "tau_dc", "impulse", "int_F2")):
+        np.testing.assert_array_equal(got[:, j], py[f], err_msg=f)
     # against the root finding and quadrature of the numpy kernels (the tables' own accuracy)
     k = PY["ham1"].summary(np.array([0.5, 1.7]))
     for i, lam in enumerate((0.5, 1.7)):

@@ -398,6 +398,15 @@ def _lammps() -> ModuleType:
     return lammps_artefacts
 
 
+def _lammps_study(name: str, what: str, files: tuple[str, ...], study: str,
+                  same: str = "csv_same") -> Artefact:
+    """The artefact of a LAMMPS study: ``bench.lammps_artefacts``' ``<study>_fresh`` and
+    ``<study>_write``, compared by its ``same`` (imported on first use: LAMMPS is optional)."""
+    return Artefact(name, what, files, lambda root: getattr(_lammps(), f"{study}_fresh")(root),
+                    lambda rel, old, new: getattr(_lammps(), same)(rel, old, new),
+                    write=lambda root, texts: getattr(_lammps(), f"{study}_write")(root, texts))
+
+
 _EXACT_FRESH, _EXACT_SAME, _EXACT_WRITE = _table("zener_sym.exact.table_build",
                                                   "the builder or the solver")
 _FORCE_FRESH, _FORCE_SAME, _FORCE_WRITE = _table(
@@ -455,26 +464,18 @@ ARTEFACTS: tuple[Artefact, ...] = (
              ("src/zener_sym/data/lammps_error_law.json",),
              lambda root: _lammps().law_fresh(root),
              lambda rel, old, new: _lammps().law_same(rel, old, new), needs_checkout=False),
-    Artefact("lammps-convergence", "LAMMPS against the exact e: ladder of timesteps, observed "
-             "order, extrapolation (runs LAMMPS)",
-             ("docs/data/lammps_convergence.csv", "docs/data/lammps_orders.csv",
-              "docs/figures/lammps_convergence.png"),
-             lambda root: _lammps().convergence_fresh(root),
-             lambda rel, old, new: _lammps().csv_same(rel, old, new),
-             write=lambda root, texts: _lammps().convergence_write(root, texts)),
-    Artefact("lammps-stability", "the timestep beyond which LAMMPS loses the collision, over "
-             "lambda (runs LAMMPS)", ("docs/data/lammps_stability.csv",
-                                      "docs/figures/lammps_stability.png"),
-             lambda root: _lammps().stability_fresh(root),
-             lambda rel, old, new: _lammps().csv_same(rel, old, new),
-             write=lambda root, texts: _lammps().stability_write(root, texts)),
-    Artefact("lammps-mpi", "the example deck of 10 000 grains on a wall, run with mpirun -np 2 "
-             "(and 1): every grain's e against the exact e(v)",
-             ("examples/lammps/in.impacts", "docs/data/lammps_mpi.csv",
-              "docs/figures/lammps_mpi.png"),
-             lambda root: _lammps().mpi_fresh(root),
-             lambda rel, old, new: _lammps().mpi_same(rel, old, new),
-             write=lambda root, texts: _lammps().mpi_write(root, texts)),
+    _lammps_study("lammps-convergence", "LAMMPS against the exact e: ladder of timesteps, "
+                  "observed order, extrapolation (runs LAMMPS)",
+                  ("docs/data/lammps_convergence.csv", "docs/data/lammps_orders.csv",
+                   "docs/figures/lammps_convergence.png"), "convergence"),
+    _lammps_study("lammps-stability", "the timestep beyond which LAMMPS loses the collision, "
+                  "over lambda (runs LAMMPS)",
+                  ("docs/data/lammps_stability.csv", "docs/figures/lammps_stability.png"),
+                  "stability"),
+    _lammps_study("lammps-mpi", "the example deck of 10 000 grains on a wall, run with mpirun "
+                  "-np 2 (and 1): every grain's e against the exact e(v)",
+                  ("examples/lammps/in.impacts", "docs/data/lammps_mpi.csv",
+                   "docs/figures/lammps_mpi.png"), "mpi", same="mpi_same"),
     Artefact("lammps-docs", "the tables of docs/lammps.md from the LAMMPS data above (no run)",
              ("docs/lammps.md",), lambda root: _lammps_docs().fresh(root)),
 )

@@ -17,6 +17,7 @@ import difflib
 import io
 import json
 import math
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -95,13 +96,15 @@ def law_same(rel: str, old: str, new: str) -> list[str]:
     return bad[:20]
 
 
-_CONV_ROWS: dict[str, list[dict[str, Any]]] = {}
+#: What each study's fresh text was made from, by (study, text): writing that text draws its
+#: chart from it instead of running LAMMPS again.
+_MADE: dict[tuple[str, str], Any] = {}
 
 
 def convergence_fresh(root: Path | None) -> Texts:
     rows = lv.convergence()
     text = lv.convergence_csv(rows)
-    _CONV_ROWS[text] = rows
+    _MADE[("convergence", text)] = rows
     return {CONVERGENCE: text, ORDERS: orders_csv(lv.order_rows(rows))}
 
 
@@ -126,37 +129,43 @@ def _write(root: Path | None, texts: Texts) -> list[Path]:
     return out
 
 
-def convergence_write(root: Path | None, texts: Texts) -> list[Path]:
-    from .lammps_charts import convergence_chart
+def _charts() -> Any:
+    from . import lammps_charts  # matplotlib: imported only to draw
 
+    return lammps_charts
+
+
+def _write_with_chart(root: Path | None, texts: Texts, study: str, key: str,
+                      compute: Callable[[], Any], draw: Callable[[Any, Path], None],
+                      rel: str) -> list[Path]:
+    """Write a study's texts and draw its chart (``draw(made, path)``) from what the text
+    ``texts[key]`` was made from (``compute()`` when it was not made in this process)."""
     out = _write(root, texts)
-    rows = _CONV_ROWS.get(texts[CONVERGENCE]) or lv.convergence()
-    chart = _at(root, CONVERGENCE_CHART)
-    convergence_chart(rows, chart)
-    return out + [chart]
+    made = _MADE.get((study, texts[key]))
+    if made is None:
+        made = compute()
+    path = _at(root, rel)
+    draw(made, path)
+    return out + [path]
 
 
-_STAB_ROWS: dict[str, list[dict[str, Any]]] = {}
+def convergence_write(root: Path | None, texts: Texts) -> list[Path]:
+    return _write_with_chart(root, texts, "convergence", CONVERGENCE, lv.convergence,
+                             lambda rows, path: _charts().convergence_chart(rows, path),
+                             CONVERGENCE_CHART)
 
 
 def stability_fresh(root: Path | None) -> Texts:
     rows = lv.stability()
     text = lv.stability_csv(rows)
-    _STAB_ROWS[text] = rows
+    _MADE[("stability", text)] = rows
     return {STABILITY: text}
 
 
 def stability_write(root: Path | None, texts: Texts) -> list[Path]:
-    from .lammps_charts import stability_chart
-
-    out = _write(root, texts)
-    rows = _STAB_ROWS.get(texts[STABILITY]) or lv.stability()
-    chart = _at(root, STABILITY_CHART)
-    stability_chart(rows, chart)
-    return out + [chart]
-
-
-_MPI: dict[str, dict[str, Any]] = {}
+    return _write_with_chart(root, texts, "stability", STABILITY, lv.stability,
+                             lambda rows, path: _charts().stability_chart(rows, path),
+                             STABILITY_CHART)
 
 
 def mpi_fresh(root: Path | None) -> Texts:
@@ -164,7 +173,7 @@ def mpi_fresh(root: Path | None) -> Texts:
 
     result = lammps_mpi.study()
     text = lammps_mpi.summary_csv(result)
-    _MPI[text] = result
+    _MADE[("mpi", text)] = result
     return {MPI_DECK: str(result["in_impacts"]), MPI_SUMMARY: text}
 
 
@@ -175,16 +184,16 @@ def mpi_same(rel: str, old: str, new: str) -> list[str]:
     return csv_same(rel, old, new)
 
 
-def mpi_write(root: Path | None, texts: Texts) -> list[Path]:
-    from .lammps_charts import mpi_chart
+def _mpi_study() -> dict[str, Any]:
+    from . import lammps_mpi
 
-    out = _write(root, texts)
-    result = _MPI.get(texts[MPI_SUMMARY])
-    if result is None:
-        from . import lammps_mpi
+    return lammps_mpi.study()
 
-        result = lammps_mpi.study()
+
+def _mpi_chart(result: dict[str, Any], path: Path) -> None:
     cmp = result["comparison"]
-    chart = _at(root, MPI_CHART)
-    mpi_chart(cmp.v, cmp.e_lammps, cmp.e_exact, chart)
-    return out + [chart]
+    _charts().mpi_chart(cmp.v, cmp.e_lammps, cmp.e_exact, path)
+
+
+def mpi_write(root: Path | None, texts: Texts) -> list[Path]:
+    return _write_with_chart(root, texts, "mpi", MPI_SUMMARY, _mpi_study, _mpi_chart, MPI_CHART)

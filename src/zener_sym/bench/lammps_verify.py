@@ -27,10 +27,7 @@ import json
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
-
-import numpy as np
 
 from ..api import summary
 from ..scene.lammps import E_TOLERANCE, LammpsContact, lammps_contact

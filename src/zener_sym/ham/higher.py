@@ -455,7 +455,7 @@ class HamSolution:
         return A, z
 
     def _solve_strained(self) -> None:
-        lam, c0, b = self.lam, self.c0, self.b
+        lam, c0 = self.lam, self.c0
         op = self._op
         E0, E1, E2 = self._zeroth()
         E, Ep, Epp = [E0], [E1], [E2]

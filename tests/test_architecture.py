@@ -33,7 +33,7 @@ LAYERS = (
     ("codegen", ("zener_sym.codegen",)),
     ("leaf helpers", ("zener_sym.params", "zener_sym.numerics", "zener_sym.typing")),
     ("generated", ("zener_sym.generated",)),
-    ("numerics", ("zener_sym.exact", "zener_sym.ham")),
+    ("numerics", ("zener_sym.exact", "zener_sym.ham", "zener_sym.plate")),
     ("models", ("zener_sym.models",)),
     ("api", ("zener_sym.api",)),
     # the package facade (zener_sym/__init__.py) re-exports the scene layer

@@ -277,19 +277,52 @@ class Pieces:
         return np.asarray(scale, dtype=float)
 
 
-#: Lambdas per block of ``_series_sum``: its products [degree, lambda, field] stay small.
+#: Lambdas per block of ``_series_sum``: its two [lambda, field] buffers (a degree's gathered
+#: coefficients and the running sums, 64 kB each for 8 fields) stay in cache, whatever the number
+#: of lambdas.
 _SUM_BLOCK = 1024
+#: Up to this many lambdas, ``_series_sum`` gathers every degree's coefficients in one call (at
+#: most [degree, 256, field]): for few lambdas the per-degree calls cost more than the sums.
+_GATHER_ALL = 256
 
 
-def _series_sum(tl: FloatArray, ci: FloatArray) -> FloatArray:
-    """sum_k tl[:, k] ci[:, :, k] in a fixed order, term after term (each lambda's value does
-    not depend on the others evaluated with it; ``np.add.accumulate`` adds strictly in order,
-    so one call replaces the loop over degrees)."""
-    n = min(tl.shape[1], ci.shape[2])
-    out = np.empty(ci.shape[:2])
-    for s in range(0, len(out), _SUM_BLOCK):
-        prods = tl[s:s + _SUM_BLOCK, None, :n] * ci[s:s + _SUM_BLOCK, :, :n]
-        out[s:s + _SUM_BLOCK] = np.add.accumulate(prods, axis=2)[:, :, -1]
+def _series_sum(tl: FloatArray, coef: FloatArray, i: Index) -> FloatArray:
+    """sum_k tl[:, k] coef[k, i, :], the series summed term after term, in place.
+
+    The one ordered sum of every table (values, derivatives, one series): the products
+    T_k(x) c_k added left to right from degree 0, the order of the C kernels' ``zs__eval``, so
+    a lambda's value does not depend on the others evaluated with it, and C and Python give the
+    same doubles.
+
+    Parameters
+    ----------
+    tl : ndarray
+        T_k(x) per lambda, [lambda, degree].
+    coef : ndarray
+        The coefficients, degree-major [degree, piece, field]: a degree's gather is one
+        contiguous [piece, field] row, so a block of lambdas needs no copy of every degree.
+    i : ndarray of int
+        Each lambda's piece.
+
+    Returns
+    -------
+    ndarray
+        [lambda, field].
+    """
+    n = min(tl.shape[1], coef.shape[0])
+    out = np.empty((len(i), coef.shape[2]))
+    buf = np.empty((min(len(i), _SUM_BLOCK), coef.shape[2]))
+    for s in range(0, len(i), _SUM_BLOCK):
+        ib, tb, ob = i[s:s + _SUM_BLOCK], tl[s:s + _SUM_BLOCK], out[s:s + _SUM_BLOCK]
+        bb = buf[:len(ib)]
+        rows = coef[:n].take(ib, axis=1) if len(ib) <= _GATHER_ALL else None
+        for k in range(n):
+            ck = rows[k] if rows is not None else coef[k].take(ib, axis=0, out=bb)
+            if k == 0:
+                np.multiply(tb[:, :1], ck, out=ob)
+            else:
+                np.multiply(tb[:, k:k + 1], ck, out=bb)
+                ob += bb
     return out
 
 
@@ -336,14 +369,15 @@ class SummaryTable:
         self.fields = tuple(fields)
         n = len(pieces)
         deg = max(len(series[k][p]) for k in self.fields for p in range(n))
-        c = np.zeros((n, len(self.fields), deg))  # [piece, field, degree], zero-padded
+        c = np.zeros((deg, n, len(self.fields)))  # [degree, piece, field], zero-padded
         for f, k in enumerate(self.fields):
             for p in range(n):
-                c[p, f, : len(series[k][p])] = series[k][p]
+                c[: len(series[k][p]), p, f] = series[k][p]
         self.coef = c
         # d/dx term by term (chebder: exact on the stored coefficients but for its recurrence)
         self.dcoef = (np.zeros_like(c) if deg <= 1 else
-                      np.asarray(np.polynomial.chebyshev.chebder(c, axis=2), dtype=float))
+                      np.ascontiguousarray(np.polynomial.chebyshev.chebder(c, axis=0),
+                                           dtype=float))
         self.what, self.hint, self.top_open = what, hint, top_open
         self.lo, self.hi = float(self.pieces.edges[0]), float(self.pieces.edges[-1])
 
@@ -422,23 +456,23 @@ class SummaryTable:
         """Every stored series at lam (1-D): the values by field, piece index, x and the
         Chebyshev basis T_k(x) [lambda, degree]."""
         i, x = self.locate(lam, hi)
-        tl = _basis(x, self.coef.shape[2])
-        return dict(zip(self.fields, _series_sum(tl, self.coef[i]).T)), i, x, tl
+        tl = _basis(x, self.coef.shape[0])
+        return dict(zip(self.fields, _series_sum(tl, self.coef, i).T)), i, x, tl
 
     def derivatives(self, lam: FloatArray, i: Index, x: FloatArray) -> dict[str, FloatArray]:
         """d(stored series)/dlambda at lam (1-D) on pieces i at x (from ``values``)."""
-        tl = _basis(x, self.dcoef.shape[2])
+        tl = _basis(x, self.dcoef.shape[0])
         scale = self.pieces.dx_dlam(lam, i)
-        return {k: c * scale for k, c in zip(self.fields, _series_sum(tl, self.dcoef[i]).T)}
+        return {k: c * scale for k, c in zip(self.fields, _series_sum(tl, self.dcoef, i).T)}
 
     def one(self, lam: FloatArray, field: str) -> tuple[FloatArray, FloatArray]:
-        """One stored series and its d/dlambda at lam (1-D): only that series is summed."""
+        """One stored series and its d/dlambda at lam (1-D): only that series is summed, by the
+        same ordered sum as ``values`` and ``derivatives`` (the same bits as theirs)."""
         k = self.fields.index(field)
         i, x = self.locate(lam)
-        c, d = self.coef[:, k, :], self.dcoef[:, k, :]
-        tl = _basis(x, c.shape[1])
-        val = np.einsum("nk,nk->n", tl, c[i])
-        der = np.einsum("nk,nk->n", tl[:, : d.shape[1]], d[i, : tl.shape[1]])
+        tl = _basis(x, self.coef.shape[0])
+        val = _series_sum(tl, self.coef[:, :, k:k + 1], i)[:, 0]
+        der = _series_sum(tl, self.dcoef[:, :, k:k + 1], i)[:, 0]
         return val, der * self.pieces.dx_dlam(lam, i)
 
 

@@ -105,7 +105,7 @@ def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     if pieces != TIME_PIECES or tuple(ns.get("HISTORY_KEYS", ("f", "I"))) != ("f", "I"):
         raise ValueError(f"table {name}: time pieces {pieces}; the C runtime evaluates "
                          f"{TIME_PIECES} with fields ('f', 'I') (add the new maps to "
-                         "codegen/c/runtime.py first)")
+                         "codegen/c/runtime.c.in first)")
     pieces = ns["TABLE_PIECES"]
     edges = [float(a) for _, a, _ in pieces] + [float(pieces[-1][2])]
     n_lam = len(pieces)
@@ -216,7 +216,7 @@ def _to_monomial(vals: list[str], rows: int, cols: int,
                  conv: list[list[Fraction]]) -> list[list[float]]:
     """A [rows: Chebyshev degree in time][cols: lambda degree] matrix (the file's digits) as
     [time power][lambda degree]: each coefficient the exact sum, rounded once (machine
-    independent; ``exact.table._history_layout`` does the same conversion in float64)."""
+    independent; ``numerics.cheb_table.history_rows`` does the same conversion in float64)."""
     c = [[Fraction(float(vals[j * cols + k])) for k in range(cols)] for j in range(rows)]
     return [[float(sum(conv[i][j] * c[j][k] for j in range(i, rows))) for k in range(cols)]
             for i in range(rows)]

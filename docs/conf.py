@@ -139,7 +139,7 @@ _LAMMPS_SCRIPTS = sorted(f.stem for f in GALLERY_SRC.glob("plot_*.py")
 if not _LAMMPS_SCRIPTS or _lammps_run.available():
     _RUN = r"[\\/]plot_"
 else:
-    _RUN = r"[\\/]plot_(?!" + "|".join(_LAMMPS_SCRIPTS) + ")"
+    _RUN = r"[\\/](?!(?:" + "|".join(map(re.escape, _LAMMPS_SCRIPTS)) + r")\.py$)plot_"
     print(f"docs: {', '.join(_LAMMPS_SCRIPTS)} shown, not run: {_lammps_run.HINT}")
 
 sphinx_gallery_conf = {

@@ -391,9 +391,12 @@ def _lambda_series_fresh(root: Path | None) -> Texts:
 
 def _lammps(study: _lammps_publish.Study) -> Artefact:
     """The artefact of a LAMMPS study (runs LAMMPS): its files, texts and chart as
-    :mod:`zener_sym.bench.lammps.publish` describes them (one with a chart writes it too)."""
-    return Artefact(study.name, study.about, study.paths, study.fresh, study.same,
-                    study.write if study.chart else None, needs_checkout=study.needs_checkout)
+    :mod:`zener_sym.bench.lammps.publish` describes them (one with a chart draws it too)."""
+    def write(root: Path | None, texts: Texts) -> list[Path]:
+        return _write_texts(root, texts) + study.draw_chart(root, texts)
+
+    return Artefact(study.name, study.about, study.paths, study.fresh, study.same, write,
+                    needs_checkout=study.needs_checkout)
 
 
 _EXACT_FRESH, _EXACT_SAME, _EXACT_WRITE = _table("zener_sym.exact.table_build",

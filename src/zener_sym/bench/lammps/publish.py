@@ -119,8 +119,8 @@ def _at(root: Path | None, rel: str) -> Path:
     return Path(root) / rel
 
 
-#: What each study's fresh texts were made from, by (study, texts): writing those texts draws
-#: the chart from it instead of running LAMMPS again.
+#: What each study's fresh texts were made from, by (study, texts): the chart of those texts is
+#: drawn from it instead of running LAMMPS again.
 _MADE: dict[tuple[str, tuple[str, ...]], Any] = {}
 
 
@@ -143,7 +143,7 @@ class Study:
     same : callable(rel, committed, fresh) -> list of str
         The differences that make a committed text stale.
     chart : str, optional
-        The chart it draws when written (not checked: drawn from the same data as the texts).
+        The chart it draws when rebuilt (not checked: drawn from the same data as the texts).
     draw : callable(made, path), optional
         Draws the chart.
     needs_checkout : bool
@@ -172,25 +172,18 @@ class Study:
         _MADE[(self.name, rendered)] = made
         return dict(zip(self.texts, rendered))
 
-    def write(self, root: Path | None, texts: Texts) -> list[Path]:
-        """Write the texts that changed, and draw the chart from what ``texts`` were made from
-        (running the study again only when they were not made in this process)."""
-        out = []
-        for rel, text in texts.items():
-            p = _at(root, rel)
-            if p.exists() and p.read_text(encoding="utf-8") == text:
-                continue
-            p.parent.mkdir(parents=True, exist_ok=True)
-            p.write_text(text, encoding="utf-8")
-            out.append(p)
+    def draw_chart(self, root: Path | None, texts: Texts) -> list[Path]:
+        """Draw the chart (none: nothing) from what ``texts`` were made from, running the study
+        again only when they were not made in this process; the texts themselves are written
+        as every artefact's are (:mod:`zener_sym.artefacts`)."""
         if self.chart is None or self.draw is None:
-            return out
+            return []
         made = _MADE.get((self.name, tuple(texts[rel] for rel in self.texts)))
         if made is None:
             made = self.compute()
         path = _at(root, self.chart)
         self.draw(made, path)
-        return out + [path]
+        return [path]
 
 
 def _convergence_texts(rows: list[dict[str, Any]]) -> tuple[str, ...]:

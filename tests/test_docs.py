@@ -188,7 +188,8 @@ MD_PAGES = sorted((ROOT / "docs").glob("*.md"))
 
 def test_prose_checker_sees_what_is_code_and_math():
     page = ("text δ^{3/2} here\n\n    code x^{2}\n\n```\nfenced y^{2}\n```\n"
-            "inline `z^{2}` and $a^{2}$ and\n$$\nb^{2}\n$$\nmath $c^{2}\nacross$ lines, then w^{2}\n")
+            "inline `z^{2}` and $a^{2}$ and\n$$\nb^{2}\n$$\n"
+            "math $c^{2}\nacross$ lines, then w^{2}\n")
     found = [no for no, line in _prose(page) if "^{" in line]
     assert found == [1, 13]
 

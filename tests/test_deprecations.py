@@ -134,3 +134,23 @@ def test_lam_for_and_viscoelastic_lambda_are_deprecated_names():
         old = zs.viscoelastic_lambda(1e-6, 1e9, 1e-5, 1.0)
     assert old == _new(zs.lam_from_dissipation, 1e-6, 1e9, 1e-5, 1.0)
     assert "lam_for" not in zs.__all__ and "viscoelastic_lambda" not in zs.__all__
+
+
+# -- the flat LAMMPS modules moved into bench/lammps/ (issue 36) --------------------------------
+
+@pytest.mark.parametrize("old, new, name", [
+    ("zener_sym.bench.lammps_run", "zener_sym.bench.lammps.run", "Session"),
+    ("zener_sym.bench.lammps_run", "zener_sym.bench.lammps.run", "LammpsMissing"),
+    ("zener_sym.bench.lammps_verify", "zener_sym.bench.lammps.studies", "convergence"),
+    ("zener_sym.bench.lammps_mpi", "zener_sym.bench.lammps.mpi", "write_deck"),
+    ("zener_sym.bench.lammps_charts", "zener_sym.bench.lammps.charts", "mpi_chart"),
+])
+def test_old_lammps_module_paths_warn_and_give_the_same_objects(old, new, name):
+    import importlib
+
+    new_obj = getattr(_new(importlib.import_module, new), name)
+    module = importlib.import_module(old)
+    with pytest.warns(DeprecationWarning, match=rf"{old} is deprecated: use {new}"):
+        assert getattr(module, name) is new_obj
+    with pytest.raises(AttributeError, match="no attribute 'no_such_name'"):
+        module.no_such_name

@@ -135,3 +135,69 @@ def test_ci_runs_the_readmes_test_command():
     assert len(commands) == 1, commands
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()
     assert commands[0] in ci
+
+
+def _prose(text: str) -> list[tuple[int, str]]:
+    """The lines of a MyST page outside code and math, each with its number: fenced blocks,
+    indented code blocks, display math ($$...$$), inline code and inline math are blanked."""
+    lines = text.splitlines()
+    out: list[tuple[int, str]] = []
+    fence = None
+    display = False
+    prev_blank = True
+    in_indented = False
+    for no, line in enumerate(lines, 1):
+        stripped = line.strip()
+        if fence:
+            if stripped.startswith(fence):
+                fence = None
+            prev_blank = False
+            continue
+        m = re.match(r"^\s*(```+|~~~+|:::+)", line)
+        if m:
+            fence = m.group(1)
+            continue
+        if display:
+            display = not stripped.endswith("$$")
+            continue
+        if stripped.startswith("$$"):
+            display = not (len(stripped) > 2 and stripped.endswith("$$"))
+            continue
+        # an indented code block: 4+ spaces after a blank line (or continuing one)
+        if line.startswith("    ") and (prev_blank or in_indented):
+            in_indented = True
+            continue
+        in_indented = in_indented and not stripped
+        prev_blank = not stripped
+        out.append((no, line))
+    # inline code and inline math may span lines of a paragraph: blank them over the joined text
+    joined = "\n".join(f"{no}\x00{line}" for no, line in out)
+    def blank(m: re.Match[str]) -> str:  # keep the line marks inside a span
+        return "".join(re.findall(r"\n\d+\x00", m.group(0)))
+
+    joined = re.sub(r"(`+)(?:(?!\1).)+?\1", blank, joined, flags=re.S)
+    joined = re.sub(r"(?<![\\$])\$(?!\$)[^$]+?(?<!\\)\$", blank, joined, flags=re.S)
+    return [(int(no), rest) for no, _, rest in (part.partition("\x00")
+                                                for part in joined.split("\n") if "\x00" in part)]
+
+
+#: The hand-written pages of the site (FORMULAS.md and AUDIT.md are generated, with their own
+#: tests).
+MD_PAGES = sorted((ROOT / "docs").glob("*.md"))
+
+
+def test_prose_checker_sees_what_is_code_and_math():
+    page = ("text δ^{3/2} here\n\n    code x^{2}\n\n```\nfenced y^{2}\n```\n"
+            "inline `z^{2}` and $a^{2}$ and\n$$\nb^{2}\n$$\n"
+            "math $c^{2}\nacross$ lines, then w^{2}\n")
+    found = [no for no, line in _prose(page) if "^{" in line]
+    assert found == [1, 13]
+
+
+@pytest.mark.parametrize("page", MD_PAGES, ids=lambda p: p.name)
+def test_math_is_dollarmath_not_caret_text(page):
+    """Formulas are written as MyST dollarmath ($...$, $$...$$) so that the site renders them:
+    a raw ``^{`` outside code and math is caret text a reader sees as such."""
+    raw = [f"{page.name}:{no}: {line.strip()}" for no, line in _prose(page.read_text("utf-8"))
+           if "^{" in line]
+    assert not raw, "caret math outside $...$:\n" + "\n".join(raw)

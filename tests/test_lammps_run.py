@@ -13,8 +13,8 @@ import pytest
 
 import zener_sym as zs
 from zener_sym import cli
-from zener_sym.bench import lammps_run as lr
-from zener_sym.bench import lammps_verify as lv
+from zener_sym.bench.lammps import run as lr
+from zener_sym.bench.lammps import studies as lv
 from zener_sym.scene.lammps import lammps_contact
 
 
@@ -146,7 +146,7 @@ def test_missing_lammps_is_one_line_naming_the_extra(monkeypatch):
 
 
 def test_mpi_deck_same_e_on_one_and_two_ranks_and_within_the_promise(tmp_path):
-    from zener_sym.bench import lammps_mpi as lm
+    from zener_sym.bench.lammps import mpi as lm
 
     deck = lm.write_deck(tmp_path, n=400)
     for ranks in (1, 2):

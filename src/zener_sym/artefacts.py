@@ -26,6 +26,9 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+# LAMMPS's studies name their own files (LAMMPS itself is imported only when one runs)
+from .bench.lammps import publish as _lammps_publish
+
 __all__ = ["Artefact", "ARTEFACTS", "names", "get", "locate", "check", "build",
            "text_diff", "text_skeleton", "text_drift", "Texts", "FreshFn", "SameFn", "WriteFn"]
 
@@ -386,25 +389,14 @@ def _lambda_series_fresh(root: Path | None) -> Texts:
     return {"src/zener_sym/data/lambda_series.json": ls.coefficients_json(ctx)}
 
 
-def _lammps_docs() -> ModuleType:
-    from .bench import lammps_docs
+def _lammps(study: _lammps_publish.Study) -> Artefact:
+    """The artefact of a LAMMPS study (runs LAMMPS): its files, texts and chart as
+    :mod:`zener_sym.bench.lammps.publish` describes them (one with a chart draws it too)."""
+    def write(root: Path | None, texts: Texts) -> list[Path]:
+        return _write_texts(root, texts) + study.draw_chart(root, texts)
 
-    return lammps_docs
-
-
-def _lammps() -> ModuleType:
-    from .bench import lammps_artefacts
-
-    return lammps_artefacts
-
-
-def _lammps_study(name: str, what: str, files: tuple[str, ...], study: str,
-                  same: str = "csv_same") -> Artefact:
-    """The artefact of a LAMMPS study: ``bench.lammps_artefacts``' ``<study>_fresh`` and
-    ``<study>_write``, compared by its ``same`` (imported on first use: LAMMPS is optional)."""
-    return Artefact(name, what, files, lambda root: getattr(_lammps(), f"{study}_fresh")(root),
-                    lambda rel, old, new: getattr(_lammps(), same)(rel, old, new),
-                    write=lambda root, texts: getattr(_lammps(), f"{study}_write")(root, texts))
+    return Artefact(study.name, study.about, study.paths, study.fresh, study.same, write,
+                    needs_checkout=study.needs_checkout)
 
 
 _EXACT_FRESH, _EXACT_SAME, _EXACT_WRITE = _table("zener_sym.exact.table_build",
@@ -459,25 +451,9 @@ ARTEFACTS: tuple[Artefact, ...] = (
              write=_figures_write, alias="figures --out docs/figures"),
     Artefact("audit", "the paper audit", ("AUDIT.md",), _audit_fresh,
              alias="audit --write"),
-    Artefact("lammps-error-law", "LAMMPS's measured e error over lambda and steps per contact "
-             "(zener-sym lammps reads it; runs LAMMPS)",
-             ("src/zener_sym/data/lammps_error_law.json",),
-             lambda root: _lammps().law_fresh(root),
-             lambda rel, old, new: _lammps().law_same(rel, old, new), needs_checkout=False),
-    _lammps_study("lammps-convergence", "LAMMPS against the exact e: ladder of timesteps, "
-                  "observed order, extrapolation (runs LAMMPS)",
-                  ("docs/data/lammps_convergence.csv", "docs/data/lammps_orders.csv",
-                   "docs/figures/lammps_convergence.png"), "convergence"),
-    _lammps_study("lammps-stability", "the timestep beyond which LAMMPS loses the collision, "
-                  "over lambda (runs LAMMPS)",
-                  ("docs/data/lammps_stability.csv", "docs/figures/lammps_stability.png"),
-                  "stability"),
-    _lammps_study("lammps-mpi", "the example deck of 10 000 grains on a wall, run with mpirun "
-                  "-np 2 (and 1): every grain's e against the exact e(v)",
-                  ("examples/lammps/in.impacts", "docs/data/lammps_mpi.csv",
-                   "docs/figures/lammps_mpi.png"), "mpi", same="mpi_same"),
+    *(_lammps(study) for study in _lammps_publish.STUDIES),
     Artefact("lammps-docs", "the tables of docs/lammps.md from the LAMMPS data above (no run)",
-             ("docs/lammps.md",), lambda root: _lammps_docs().fresh(root)),
+             (_lammps_publish.PAGE,), _lammps_publish.docs_fresh),
 )
 
 

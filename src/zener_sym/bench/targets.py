@@ -77,7 +77,7 @@ def run(quick: bool = False) -> list[dict[str, Any]]:
 
     rows += calibrate_targets.run(quick=quick)
     rows += c_targets.run(quick=quick)
-    from . import lammps_targets  # LAMMPS beside the tables (issue 31), when installed
+    from .lammps import method as lammps_method  # LAMMPS beside the tables, when installed
 
-    rows += lammps_targets.run(quick=quick)
+    rows += lammps_method.targets(quick=quick)
     return rows

@@ -20,7 +20,7 @@ polydisperse LAMMPS system has A proportional to m_eff (the docs page says what 
 
 The timestep column ``dt_max_s`` reads LAMMPS's measured error law (``data/lammps_error_law.json``,
 rebuilt by ``zener-sym regen lammps-error-law`` from LAMMPS runs in
-:mod:`zener_sym.bench.lammps_verify`).
+:mod:`zener_sym.bench.lammps.studies`).
 """
 from __future__ import annotations
 

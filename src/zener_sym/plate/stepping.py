@@ -16,13 +16,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import mpmath
 import numpy as np
 from scipy.optimize import brentq
 
 from ..typing import FloatArray
 from .kernels import ComplexArray, Kernel, Rates, psi2
 
-__all__ = ["ContactRun", "step_contact", "end_of_contact"]
+__all__ = ["ContactRun", "step_contact", "end_of_contact", "start_kick", "end_defect",
+           "START_DEFECT"]
 
 
 @dataclass
@@ -36,6 +38,7 @@ class ContactRun:
     x_e: float
     v_e: float
     B_e: ComplexArray        # modal amplitudes at t_e
+    defect: float = 0.0      # impulse the linear pieces miss at the start and the end
 
     @property
     def t_e(self) -> float:
@@ -48,7 +51,7 @@ class ContactRun:
         if len(F) < 2:
             return 0.0
         # hats: a whole step at nodes 1 .. k-2, half a step plus half the partial step at k-1
-        return float(h * np.sum(F[1:-1]) + F[-1] * (h + self.a) / 2.0)
+        return float(h * np.sum(F[1:-1]) + F[-1] * (h + self.a) / 2.0 + self.defect)
 
     @property
     def peak(self) -> tuple[float, float]:
@@ -77,7 +80,9 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
     while True:
         kernel.grow(n)
         m = np.arange(k0, n + 1)
-        d_free = x_s + v_s * h * m - _combine(B_s, kernel.E[:, k0:n + 1]).real
+        d_free = x_s + v_s * h * m
+        if np.any(B_s):          # the plate at rest (the first contact) adds nothing
+            d_free = d_free - _combine(B_s, kernel.E[:, k0:n + 1]).real
         F = np.concatenate([F, np.zeros(n + 1 - len(F))])
         k = _march(F, d_free, kernel.Lrev, kernel.L[0] + c_res, k0, n)
         if k is not None:
@@ -151,9 +156,35 @@ def end_of_contact(kernel: Kernel, c_res: float, t_s: float, x_s: float, v_s: fl
     w_end = h if delta(h) >= 0.0 else brentq(delta, 0.0, h, xtol=1e-15 * max(h, 1e-300),
                                              rtol=8.9e-16)
     y_e, u_e = _modes_after(r, B1, f1, w_end)
+    v_e = v1 - 0.5 * f1 * w_end
+    # the force's (t_e - t)^{3/2} end, which the linear pieces miss: F ~ (-delta'_e u)^{3/2}
+    rate = max(float(np.sum(u_e)) - v_e, 0.0)
+    dI = rate**1.5 * h**2.5 * end_defect(w_end / h)
     return ContactRun(t_s=t_s, h=h, F=np.array(Fk), a=w_end,
-                      x_e=x1 + v1 * w_end - f1 * w_end**2 / 3.0, v_e=v1 - 0.5 * f1 * w_end,
-                      B_e=r.amplitude(y_e, u_e))
+                      x_e=x1 + v1 * w_end - f1 * w_end**2 / 3.0, v_e=v_e - dI,
+                      B_e=r.amplitude(y_e, u_e + r.c * dI), defect=dI)
+
+
+#: -zeta(-3/2): the impulse that linear pieces miss at a (tau - tau_s)^{3/2} start on the grid,
+#: in units of (delta'_s)^{3/2} h^{5/2} (Navot's extension of Euler-Maclaurin)
+START_DEFECT = float(-mpmath.zeta(-1.5))
+
+
+def end_defect(theta: float) -> float:
+    """The impulse linear pieces miss at a (tau_e - tau)^{3/2} end a fraction theta of a step
+    after the last node, in units of (-delta'_e)^{3/2} h^{5/2}:
+    theta^{3/2}/2 - theta^{5/2}/2 - zeta(-3/2, theta) (Hurwitz zeta)."""
+    return float(theta**1.5 / 2.0 - theta**2.5 / 2.0 - mpmath.zeta(-1.5, theta))
+
+
+def start_kick(r: Rates, h: float, v_s: float, B_s: ComplexArray) -> tuple[float, ComplexArray,
+                                                                              float]:
+    """(v_s, B_s, dI) with the start's missed impulse dI applied at t_s: ball slowed, modes
+    pushed."""
+    rate = max(v_s - float(np.sum((r.s * B_s).real)), 0.0)
+    dI = rate**1.5 * h**2.5 * START_DEFECT
+    y, u = B_s.real, (r.s * B_s).real
+    return v_s - dI, r.amplitude(y, u + r.c * dI), dI
 
 
 def _modes_after(r: Rates, B1: ComplexArray, f1: float,

@@ -151,6 +151,15 @@ def test_error_estimate_bounds_the_true_error(rtol):
         assert abs(c.impulse - cr.impulse) <= max(err["impulse"], 1e-12) * 10
 
 
+def test_error_estimate_over_a_sample_of_steps():
+    """Whatever the grid's phase against the contacts' ends, the estimate bounds the error."""
+    plate = clamped_circle(GLASS50["lam"], GLASS50["beta"], 20)
+    ref = solve(plate, rtol=1e-10).e
+    for h in np.exp(np.random.default_rng(7).uniform(np.log(0.01), np.log(0.1), 8)):
+        res = solve(plate, rtol=1e-2, h=h)           # rtol 1e-2: the first three levels only
+        assert abs(res.e - ref) <= res.error
+
+
 def test_second_method_dop853():
     """DOP853 on the same modal system (events at each contact's start and end) agrees."""
     from zener_sym.bench.plate import dop853_impact

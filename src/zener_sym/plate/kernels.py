@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
+from ..numerics.taylor import horner
 from ..typing import FloatArray
 
 __all__ = ["Rates", "phi2", "psi2", "Kernel"]
@@ -35,20 +36,13 @@ _PHI2 = [1.0 / math.factorial(n) for n in range(2, 2 + _TERMS)]
 _PSI2 = [(n - 1) / math.factorial(n) for n in range(2, 2 + _TERMS)]
 
 
-def _series(x: ComplexArray, coef: list[float]) -> ComplexArray:
-    out = np.zeros_like(x)
-    for a in reversed(coef):
-        out = out * x + a
-    return out
-
-
 def phi2(x: ComplexArray) -> ComplexArray:
     """(e^x - 1 - x) / x^2, accurate for every complex x with Re x <= 0 (and small |x|)."""
     x = np.asarray(x, dtype=complex)
     small = np.abs(x) < _SERIES
     xs = np.where(small, 1.0, x)
     out = (np.expm1(xs) - xs) / xs**2
-    return np.where(small, _series(x, _PHI2), out)
+    return np.where(small, horner(_PHI2, x), out)
 
 
 def psi2(x: ComplexArray) -> ComplexArray:
@@ -57,7 +51,7 @@ def psi2(x: ComplexArray) -> ComplexArray:
     small = np.abs(x) < _SERIES
     xs = np.where(small, 1.0, x)
     out = (1.0 + (xs - 1.0) * np.exp(xs)) / xs**2
-    return np.where(small, _series(x, _PSI2), out)
+    return np.where(small, horner(_PSI2, x), out)
 
 
 @dataclass(frozen=True)

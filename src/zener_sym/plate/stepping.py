@@ -16,7 +16,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import mpmath
 import numpy as np
 from scipy.optimize import brentq
 
@@ -24,7 +23,7 @@ from ..typing import FloatArray
 from .kernels import ComplexArray, Kernel, Rates, psi2
 
 __all__ = ["ContactRun", "step_contact", "end_of_contact", "start_kick", "end_defect",
-           "START_DEFECT"]
+           "START_DEFECT", "zeta_m32"]
 
 
 @dataclass
@@ -165,16 +164,44 @@ def end_of_contact(kernel: Kernel, c_res: float, t_s: float, x_s: float, v_s: fl
                       B_e=r.amplitude(y_e, u_e + r.c * dI), defect=dI)
 
 
+def zeta_m32(q: float) -> float:
+    """Hurwitz zeta(-3/2, q) for q > 0: sum_{j<10} (q + j)^{3/2} + zeta(-3/2, q + 10), the tail by
+    its Euler-Maclaurin expansion (Bernoulli terms through B_10: below 1e-15 at q >= 10)."""
+    tail = q + 10.0
+    head = sum((q + j) ** 1.5 for j in range(10))
+    # q^{5/2}/(s-1) + q^{3/2}/2 + sum_k B_2k/(2k)! (s)_{2k-1} q^{-s-2k+1}, s = -3/2
+    out = -tail**2.5 / 2.5 + 0.5 * tail**1.5
+    coef = _EM_COEF
+    p = tail**0.5
+    for c in coef:
+        out += c * p
+        p /= tail * tail
+    return head + out
+
+
+def _em_coefficients() -> list[float]:
+    bern = [1.0 / 6.0, -1.0 / 30.0, 1.0 / 42.0, -1.0 / 30.0, 5.0 / 66.0]
+    s, out = -1.5, []
+    for k, b in enumerate(bern, start=1):
+        poch = 1.0
+        for i in range(2 * k - 1):
+            poch *= s + i
+        out.append(b / math.factorial(2 * k) * poch)
+    return out
+
+
+_EM_COEF = _em_coefficients()
+
 #: -zeta(-3/2): the impulse that linear pieces miss at a (tau - tau_s)^{3/2} start on the grid,
 #: in units of (delta'_s)^{3/2} h^{5/2} (Navot's extension of Euler-Maclaurin)
-START_DEFECT = float(-mpmath.zeta(-1.5))
+START_DEFECT = -zeta_m32(1.0)
 
 
 def end_defect(theta: float) -> float:
     """The impulse linear pieces miss at a (tau_e - tau)^{3/2} end a fraction theta of a step
     after the last node, in units of (-delta'_e)^{3/2} h^{5/2}:
     theta^{3/2}/2 - theta^{5/2}/2 - zeta(-3/2, theta) (Hurwitz zeta)."""
-    return float(theta**1.5 / 2.0 - theta**2.5 / 2.0 - mpmath.zeta(-1.5, theta))
+    return theta**1.5 / 2.0 - theta**2.5 / 2.0 - zeta_m32(theta)
 
 
 def start_kick(r: Rates, h: float, v_s: float, B_s: ComplexArray) -> tuple[float, ComplexArray,

@@ -190,15 +190,14 @@ def write_chart(rows: Sequence[dict[str, object]], path: pathlib.Path) -> pathli
     with style.rc() as plt:
         fig, axes = plt.subplots(1, len(CASES), figsize=(style.PAGE_WIDTH, 2.8), sharey=True)
         for ax, (name, *_rest) in zip(np.atleast_1d(axes), CASES):
-            for method, key, label in (("fast", "exact", "modal stepping (this solver)"),
-                                       ("DOP853", "DOP853", "DOP853, same modal system")):
-                pts = sorted((float(r["error"]), float(r["seconds"])) for r in rows  # type: ignore[arg-type]
-                             if r["case"] == name and r["method"] == method)
-                kw = style.style_for(key)
-                kw["label"] = label
-                kw.setdefault("marker", "o")
-                if not kw.get("marker"):
-                    kw["marker"] = "o"
+            colour, marker = style.METHOD_STYLES["DOP853"]
+            for method, kw in (("fast", dict(style.style_for("finite-plate"),
+                                             label="modal stepping (zener_sym.plate)")),
+                               ("DOP853", dict(color=colour, marker=marker, linestyle="--",
+                                               label="DOP853, same modal system"))):
+                # each method's runs in the order of its tolerances (the work-precision path)
+                pts = [(float(r["error"]), float(r["seconds"])) for r in rows  # type: ignore[arg-type]
+                       if r["case"] == name and r["method"] == method]
                 ax.loglog([max(p[0], 1e-13) for p in pts], [p[1] for p in pts], **kw)
             ax.set_title(name)
             ax.set_xlabel(r"relative error in $e$")

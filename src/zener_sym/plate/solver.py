@@ -175,7 +175,7 @@ def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float 
     _check_options(rtol, loss)
     omega, c, c_res = check_plate(plate)
     r = Rates(omega, c, float(loss))
-    h0 = float(h) if h is not None else min(0.2, 12.0 * rtol ** 0.4)
+    h0 = float(h) if h is not None else min(0.05, 12.0 * rtol ** 0.4)
     if not (math.isfinite(h0) and h0 > 0.0):
         raise ValueError(f"h must be a finite step > 0, got {h!r}")
     levels = [_run(r, c_res, h0 / 2.0**i, max_contacts, max_steps) for i in range(3)]

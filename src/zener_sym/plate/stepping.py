@@ -106,6 +106,8 @@ def _march(F: FloatArray, d_free: FloatArray, Lrev: FloatArray, a: float, k0: in
     """
     top = len(Lrev)          # Lrev[top - 1 - m] = L[m]
     dot, sqrt = np.dot, math.sqrt
+    f1 = float(F[k0 - 1])                    # the last two forces, as Python floats
+    f2 = float(F[k0 - 2]) if k0 >= 2 else 0.0
     for k in range(k0, n + 1):
         d = float(d_free[k - k0])
         if k > 1:
@@ -113,18 +115,18 @@ def _march(F: FloatArray, d_free: FloatArray, Lrev: FloatArray, a: float, k0: in
         if d <= 0.0:
             return k
         u = sqrt(d)
-        if k > 2:            # linear extrapolation, kept only if above the root
-            g = 2.0 * F[k - 1] - F[k - 2]
-            if g > 0.0:
-                ug = g ** (1.0 / 3.0) * (1.0 + 1e-9)
-                if ug < u and ug * ug * (1.0 + a * ug) >= d:
-                    u = ug
+        g = 2.0 * f1 - f2            # linear extrapolation, kept only if above the root
+        if k > 2 and g > 0.0:
+            ug = g ** (1.0 / 3.0) * (1.0 + 1e-9)
+            if ug < u and ug * ug * (1.0 + a * ug) >= d:
+                u = ug
         for _ in range(60):
             du = (u * u * (1.0 + a * u) - d) / (u * (2.0 + 3.0 * a * u))
             u -= du
             if du <= 4e-16 * u:
                 break
-        F[k] = u * u * u
+        f2, f1 = f1, u * u * u
+        F[k] = f1
     return None
 
 

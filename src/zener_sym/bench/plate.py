@@ -83,7 +83,8 @@ def dop853_impact(plate: ModalPlate, *, rtol: float, atol: float | None = None,
 
     z = np.zeros(2 * n + 2)
     z[1] = 1.0
-    t, nfev, contacts = 0.0, 0, []
+    t, nfev = 0.0, 0
+    contacts: list[tuple[float, float, float]] = []
     while len(contacts) < max_contacts:
         t_s = t
         ev_end = _event(gap, -1.0)

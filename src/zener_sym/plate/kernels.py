@@ -42,7 +42,8 @@ def phi2(x: ComplexArray) -> ComplexArray:
     small = np.abs(x) < _SERIES
     xs = np.where(small, 1.0, x)
     out = (np.expm1(xs) - xs) / xs**2
-    return np.where(small, horner(_PHI2, x), out)
+    res: ComplexArray = np.where(small, horner(_PHI2, x), out)
+    return res
 
 
 def psi2(x: ComplexArray) -> ComplexArray:
@@ -51,7 +52,8 @@ def psi2(x: ComplexArray) -> ComplexArray:
     small = np.abs(x) < _SERIES
     xs = np.where(small, 1.0, x)
     out = (1.0 + (xs - 1.0) * np.exp(xs)) / xs**2
-    return np.where(small, horner(_PSI2, x), out)
+    res: ComplexArray = np.where(small, horner(_PSI2, x), out)
+    return res
 
 
 @dataclass(frozen=True)
@@ -125,7 +127,7 @@ class Kernel:
         the complex response at node k = len(F) - 1; y = Im(c P) / omega_d, y' = Im(c s P) /
         omega_d."""
         k = len(F) - 1
-        P = self.half * F[k]
+        P: ComplexArray = self.half * F[k]
         if k >= 2:
             P = P + self.whole * np.einsum("nm,m->n", self.E[:, :k - 1][:, ::-1], F[1:k])
         return P

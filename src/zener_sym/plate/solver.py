@@ -25,7 +25,7 @@ import numpy as np
 
 from ..typing import FloatArray
 from .flight import Flight, end_bound, next_contact
-from .kernels import Kernel, Rates
+from .kernels import ComplexArray, Kernel, Rates
 from .modal import ModalPlate
 from .result import CONTACT_FIELDS, PlateContact, PlateImpact
 from .stepping import ContactRun, end_of_contact, start_kick, step_contact
@@ -93,7 +93,7 @@ class _Run:
 
 
 def _contact(r: Rates, c_res: float, h: float, kernels: dict[float, Kernel], t_s: float,
-             x_s: float, v_s: float, B_s: FloatArray, max_steps: int) -> ContactRun:
+             x_s: float, v_s: float, B_s: ComplexArray, max_steps: int) -> ContactRun:
     """One contact at step h, re-run on a finer grid when it has fewer than N_MIN nodes."""
     for _ in range(40):
         if h not in kernels:

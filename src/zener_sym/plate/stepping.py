@@ -79,7 +79,7 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
     while True:
         kernel.grow(n)
         m = np.arange(k0, n + 1)
-        d_free = x_s + v_s * h * m
+        d_free: FloatArray = x_s + v_s * h * m.astype(float)
         if np.any(B_s):          # the plate at rest (the first contact) adds nothing
             d_free = d_free - _combine(B_s, kernel.E[:, k0:n + 1]).real
         F = np.concatenate([F, np.zeros(n + 1 - len(F))])
@@ -94,7 +94,8 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
 
 def _combine(B: ComplexArray, E: ComplexArray) -> ComplexArray:
     """B @ E without BLAS (a threaded complex BLAS costs more than it saves at these sizes)."""
-    return np.einsum("n,nm->m", B, E)
+    out: ComplexArray = np.einsum("n,nm->m", B, E)
+    return out
 
 
 def _march(F: FloatArray, d_free: FloatArray, Lrev: FloatArray, a: float, k0: int,
@@ -178,7 +179,7 @@ def zeta_m32(q: float) -> float:
     for c in coef:
         out += c * p
         p /= tail * tail
-    return head + out
+    return float(head + out)
 
 
 def _em_coefficients() -> list[float]:
@@ -203,7 +204,7 @@ def end_defect(theta: float) -> float:
     """The impulse linear pieces miss at a (tau_e - tau)^{3/2} end a fraction theta of a step
     after the last node, in units of (-delta'_e)^{3/2} h^{5/2}:
     theta^{3/2}/2 - theta^{5/2}/2 - zeta(-3/2, theta) (Hurwitz zeta)."""
-    return theta**1.5 / 2.0 - theta**2.5 / 2.0 - zeta_m32(theta)
+    return float(theta**1.5 / 2.0 - theta**2.5 / 2.0 - zeta_m32(theta))
 
 
 def start_kick(r: Rates, h: float, v_s: float, B_s: ComplexArray) -> tuple[float, ComplexArray,

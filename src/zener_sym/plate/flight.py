@@ -71,6 +71,9 @@ def end_bound(r: Rates, B: ComplexArray) -> float:
 def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
     """The time of the next contact after t_r, or None when the end is proved.
 
+    Raises RuntimeError if the ball moves towards the plate and yet no contact is found before
+    it passes the bound (possible only through a graze below the search's resolution).
+
     ``scale`` is the problem's time scale (the graze threshold is 1e-13 of it).
     """
     R = end_bound(r, fl.B)
@@ -105,6 +108,9 @@ def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
             if hit is not None:
                 return hit
         t_a = float(t[-1])
+    if fl.v > 0.0:
+        raise RuntimeError(f"no contact found after tau = {fl.t_r:.6g} although the ball moves "
+                           f"towards the plate (a graze below the search's resolution?)")
     return None
 
 

@@ -29,6 +29,8 @@ __all__ = ["Rates", "phi2", "psi2", "Kernel"]
 
 ComplexArray = npt.NDArray[np.complex128]
 
+#: Largest kernel table (modes x steps complex numbers) built, in GiB.
+MAX_GIB = 2.0
 #: Below this |x| the series are used (12 terms: the next one is below 1e-17 there).
 _SERIES = 0.25
 _TERMS = 12
@@ -105,6 +107,10 @@ class Kernel:
             return
         n_new = max(n_steps + 1, 2 * have)
         r, h = self.rates, self.h
+        gib = 16.0 * len(r.s) * n_new / 2**30
+        if gib > MAX_GIB:
+            raise RuntimeError(f"{len(r.s)} modes over {n_new} steps need {gib:.1f} GiB for the "
+                               f"kernel (limit {MAX_GIB:g} GiB): use fewer modes or a looser rtol")
         E = np.empty((len(r.s), n_new), dtype=complex)
         # e^{s m h} by blocks: exp on the first block, then products (cheaper than exp)
         blk = min(n_new, 64)

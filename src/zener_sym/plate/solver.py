@@ -132,7 +132,7 @@ def _fields(r: Rates, run: _Run) -> list[dict[str, float]]:
     rows = []
     for cr in run.contacts:
         tp, fp = cr.peak
-        rows.append(dict(start=cr.t_s, end=cr.t_e, peak_time=tp, peak_force=fp,
+        rows.append(dict(start=cr.t_s, end=cr.t_e, max_force_time=tp, max_force=fp,
                          impulse=cr.impulse, speed_after=-cr.v_e,
                          plate_energy=2.0 * r.energy(cr.B_e)))
     return rows

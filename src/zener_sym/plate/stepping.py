@@ -62,8 +62,8 @@ class ContactRun:
             den = f0 - 2.0 * f1 + f2
             if den < 0.0:
                 u = 0.5 * (f0 - f2) / den
-                return self.t_s + (i + u) * h, float(f1 - 0.25 * (f0 - f2) * u)
-        return self.t_s + i * h, float(F[i])
+                return float(self.t_s + (i + u) * h), float(f1 - 0.25 * (f0 - f2) * u)
+        return float(self.t_s + i * h), float(F[i])
 
 
 def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: ComplexArray,

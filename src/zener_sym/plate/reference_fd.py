@@ -43,7 +43,7 @@ from ..typing import FloatArray
 from .reference_fe import AxisymmetricPlateFE, plate_fe, upper_band
 
 __all__ = ["ReferenceContact", "ReferenceImpact", "simulate", "reference_impact",
-           "hertz_secant"]
+           "default_mesh", "hertz_secant"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -84,9 +84,15 @@ class ReferenceImpact:
     error : float
         The estimated absolute error of ``e`` (0 for a single run: see :func:`simulate`).
     energy_drift : float
-        The largest relative change of the total energy seen during the run(s).
-    n_elements, dt : int, float
-        The (finest) mesh and step used.
+        The largest relative change of the total energy seen during the run(s) (0 when not
+        tracked).
+    n_elements : int
+        The (finest) mesh used.
+    dt : float
+        The (finest) step used.
+    complete : bool
+        True when the run reached the proved end (no contact can follow); False when it was
+        stopped after ``max_contacts`` contacts, and ``e`` is the speed after the last of them.
     """
 
     contacts: tuple[ReferenceContact, ...]
@@ -96,6 +102,7 @@ class ReferenceImpact:
     energy_drift: float
     n_elements: int
     dt: float
+    complete: bool = True
 
 
 def hertz_secant(a: float, b: float) -> float:
@@ -147,22 +154,24 @@ def _solve_contact(d_n: float, d_star: float, s: float) -> float:
     return d
 
 
-def _hermite_root(t0: float, dt: float, d0: float, d1: float, s0: float, s1: float) -> float:
-    """The time in [t0, t0 + dt] where the cubic Hermite interpolant of delta (values d0, d1,
-    slopes s0, s1) crosses zero, by bisection (d0 and d1 of opposite signs, or zero)."""
-    def cubic(x: float) -> float:
-        h00, h10 = 1 - 3 * x**2 + 2 * x**3, x - 2 * x**2 + x**3
-        h01, h11 = 3 * x**2 - 2 * x**3, -x**2 + x**3
-        return h00 * d0 + h10 * dt * s0 + h01 * d1 + h11 * dt * s1
+def _crossing(t: float, dt: float, d_m: float | None, d0: float, d1: float) -> float:
+    """The time in [t, t + dt] where delta crosses zero, from the parabola through its samples
+    at t - dt, t, t + dt (a line without the first), by bisection (d0, d1 of opposite signs).
+    The samples alone, not the plate's trapezoidal velocity, which rings with the stiff part of
+    the mesh."""
+    def q(x: float) -> float:
+        if d_m is None:
+            return d0 + x * (d1 - d0)
+        return d0 + 0.5 * x * (d1 - d_m) + 0.5 * x * x * (d1 - 2.0 * d0 + d_m)
     lo, hi = 0.0, 1.0
     sign_lo = d0 > 0.0
     for _ in range(60):
         mid = 0.5 * (lo + hi)
-        if (cubic(mid) > 0.0) == sign_lo:
+        if (q(mid) > 0.0) == sign_lo:
             lo = mid
         else:
             hi = mid
-    return t0 + dt * 0.5 * (lo + hi)
+    return t + dt * 0.5 * (lo + hi)
 
 
 def _peak(deltas: list[float]) -> float:
@@ -210,8 +219,7 @@ class _Plate:
 
 
 class _Contacts:
-    """Bookkeeping of the contacts along the march: start and end by Hermite interpolation of
-    delta, the peak by a parabola through the samples, the impulse from the ball's momentum."""
+    """Bookkeeping of the contacts along the march: start and end by interpolation of delta, the peak by a parabola through the samples, the impulse from the ball's momentum."""
 
     def __init__(self) -> None:
         self.done: list[ReferenceContact] = []
@@ -220,15 +228,17 @@ class _Contacts:
         self.best = -math.inf
         self.window: list[float | None] = [None, None, None]
         self.prev: float | None = None
+        self.before: float | None = None
 
-    def step(self, t: float, dt: float, old: tuple[float, float, float],
-             new: tuple[float, float, float], touched: bool) -> bool:
-        """Record the step from t to t + dt (states (delta, delta', p) before and after; touched:
-        the contact force was nonzero). Returns True when a contact ended in this step."""
-        (d0, s0, p0), (d1, s1, p1) = old, new
+    def step(self, t: float, dt: float, old: tuple[float, float], new: tuple[float, float],
+             touched: bool) -> bool:
+        """Record the step from t to t + dt (states (delta, p) before and after; touched: the
+        contact force was nonzero). Returns True when a contact ended in this step."""
+        (d0, p0), (d1, p1) = old, new
+        d_m, self.before = self.before, d0
         if touched and not self.active:
             self.active, self.p_before, self.best = True, p0, -math.inf
-            self.start = t if d0 >= 0.0 else _hermite_root(t, dt, d0, d1, s0, s1)
+            self.start = t if d0 >= 0.0 else _crossing(t, dt, d_m, d0, d1)
             self.window, self.prev = [None, None, None], d0
         if not self.active:
             return False
@@ -239,17 +249,18 @@ class _Contacts:
         self.prev = d1
         if d1 > 0.0:
             return False
-        end = _hermite_root(t, dt, d0, d1, s0, s1)
+        end = _crossing(t, dt, d_m, d0, d1)
         self.done.append(ReferenceContact(self.start, end, _peak(self.window),
                                           self.p_before - p1, -p1))
         self.active = False
         return True
 
 
-def _march(plate: _Plate, t_max: float, track_energy: bool) -> tuple[list[ReferenceContact], float,
-                                                                   float, float]:
-    """Step from the first touch (tau = 0) to the proved end; returns the contacts, the ball's
-    final velocity, the plate's energy and the largest relative energy drift seen."""
+def _march(plate: _Plate, t_max: float, track_energy: bool,
+           max_contacts: int) -> tuple[list[ReferenceContact], float, float, float, bool]:
+    """Step from the first touch (tau = 0) to the proved end (or to the end of contact number
+    max_contacts); returns the contacts, the ball's final velocity, the plate's energy, the
+    largest relative energy drift seen and whether the proved end was reached."""
     dt, fe = plate.dt, plate.fe
     g, g0 = plate.g, float(plate.g[0])
     s = 0.5 * dt**2 + g0
@@ -258,7 +269,7 @@ def _march(plate: _Plate, t_max: float, track_energy: bool) -> tuple[list[Refere
     contacts, e0, drift = _Contacts(), 0.5, 0.0
     bound, n_steps = math.inf, int(math.ceil(t_max / dt))
     for _ in range(n_steps):
-        old = (delta, p - v[0], p)
+        old = (delta, p)
         du = plate.solve(plate.rhs(u, v))
         d_star = x + dt * p - u[0] - du[0]
         d_new = _solve_contact(delta, d_star, s)
@@ -268,7 +279,7 @@ def _march(plate: _Plate, t_max: float, track_energy: bool) -> tuple[list[Refere
         v = (2.0 / dt) * du - v
         u = u + du
         x, p_new = x + dt * p - 0.5 * dt**2 * force, p - dt * force
-        ended = contacts.step(t, dt, old, (d_new, p_new - v[0], p_new), force > 0.0)
+        ended = contacts.step(t, dt, old, (d_new, p_new), force > 0.0)
         delta, p, t = d_new, p_new, t + dt
         if ended:
             bound = math.sqrt(2.0 * plate.energy(u, v) * plate.compliance)
@@ -276,7 +287,9 @@ def _march(plate: _Plate, t_max: float, track_energy: bool) -> tuple[list[Refere
             total = 0.5 * p**2 + 0.4 * max(delta, 0.0) ** 2.5 + plate.energy(u, v)
             drift = max(drift, abs(total - e0) / e0)
         if not contacts.active and p < 0.0 and x < -bound:
-            return contacts.done, p, plate.energy(u, v), drift
+            return contacts.done, p, plate.energy(u, v), drift, True
+        if ended and len(contacts.done) == max_contacts:
+            return contacts.done, p, plate.energy(u, v), drift, False
     raise RuntimeError(f"the ball had not left the plate for good by tau = {t_max:g} "
                        f"({n_steps} steps); raise t_max")
 
@@ -294,7 +307,7 @@ def _check(lam: float, beta: float, support: str, nu: float) -> None:
 
 def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elements: int = 200,
              dt: float = 0.01, grading: float = 2.0, t_max: float = 1e5,
-             track_energy: bool = False) -> ReferenceImpact:
+             track_energy: bool = False, max_contacts: int = 0) -> ReferenceImpact:
     """One run of the second method on one mesh with one step (no extrapolation).
 
     Parameters
@@ -317,6 +330,8 @@ def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elemen
         Give up (RuntimeError) if the ball has not left for good by this tau.
     track_energy : bool
         Evaluate the total energy after every step and report its largest relative drift.
+    max_contacts : int
+        Stop after this many contacts (0: run to the proved end).
 
     Returns
     -------
@@ -327,6 +342,115 @@ def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elemen
     if not (math.isfinite(dt) and dt > 0.0):
         raise ValueError(f"dt must be a finite number > 0, got {dt!r}")
     plate = _Plate(plate_fe(support, nu, n_elements, grading), float(lam), float(beta), dt)
-    contacts, p_final, e_plate, drift = _march(plate, t_max, track_energy)
+    contacts, p_final, e_plate, drift, complete = _march(plate, t_max, track_energy,
+                                                         int(max_contacts))
     return ReferenceImpact(tuple(contacts), -p_final, e_plate / 0.5, 0.0, drift,
-                           int(n_elements), dt)
+                           int(n_elements), dt, complete)
+
+
+_FIELDS = ("start", "end", "max_force", "impulse", "speed_after")
+
+
+def _richardson(fine: ReferenceImpact, coarse: ReferenceImpact) -> ReferenceImpact:
+    """Richardson's extrapolation for a second-order step (dt halved): x + (x - x_coarse) / 3,
+    field by field and contact by contact (the runs must have the same contacts)."""
+    def ex(a: float, b: float) -> float:
+        return float(a + (a - b) / 3.0)
+    contacts = tuple(ReferenceContact(*(ex(getattr(f, k), getattr(c, k)) for k in _FIELDS))
+                     for f, c in zip(fine.contacts, coarse.contacts))
+    return dataclasses.replace(fine, contacts=contacts, e=ex(fine.e, coarse.e),
+                               plate_energy=ex(fine.plate_energy, coarse.plate_energy))
+
+
+def _shift(a: ReferenceImpact, fine: ReferenceImpact, coarse: ReferenceImpact) -> ReferenceImpact:
+    """a plus the change from ``coarse`` to ``fine`` (the mesh correction), field by field."""
+    def sh(x: float, f: float, c: float) -> float:
+        return float(x + (f - c))
+    contacts = tuple(ReferenceContact(*(sh(getattr(x, k), getattr(f, k), getattr(c, k))
+                                        for k in _FIELDS))
+                     for x, f, c in zip(a.contacts, fine.contacts, coarse.contacts))
+    return dataclasses.replace(a, contacts=contacts, e=sh(a.e, fine.e, coarse.e),
+                               plate_energy=sh(a.plate_energy, fine.plate_energy,
+                                               coarse.plate_energy))
+
+
+def _same_contacts(runs: list[ReferenceImpact]) -> bool:
+    return len({len(r.contacts) for r in runs}) == 1
+
+
+def default_mesh(beta: float) -> int:
+    """The number of elements for beta: the flexural wavenumber at the frequencies of a contact
+    scales as beta^(-1/2) (omega = beta (k b)^2), so the mesh does too; at least 40 elements."""
+    return max(40, int(math.ceil(15.0 / math.sqrt(beta))))
+
+
+def reference_impact(lam: float, beta: float, support: str, nu: float = 0.3, *,
+                     rtol: float = 1e-5, dt: float = 0.0125, n_elements: int | None = None,
+                     max_halvings: int = 5, t_max: float = 1e5) -> ReferenceImpact:
+    """The impact on the bounded circular plate, converged in step and mesh, with an error
+    estimate: the second method of issue 37 (no modal expansion).
+
+    The step is halved from ``dt`` and each pair of runs extrapolated (Richardson, order 2) until
+    two successive extrapolations of e agree to ``rtol * e``; the mesh correction is the change
+    of every quantity from ``n_elements`` to twice as many elements at the coarsest step.
+
+    Parameters
+    ----------
+    lam : float
+        Zener's inelasticity parameter lambda > 0 (Eq. 11).
+    beta : float
+        The plate-size parameter t_0 sqrt(D/(rho h)) / b^2 > 0.
+    support : {"clamped", "simply-supported"}
+        The edge support.
+    nu : float
+        The plate's Poisson's ratio (enters the simply supported edge only).
+    rtol : float
+        Requested relative accuracy of e.
+    dt : float
+        The coarsest step in tau.
+    n_elements : int, optional
+        The mesh (default :func:`default_mesh`).
+    max_halvings : int
+        At most this many halvings of the step (RuntimeError if rtol is not met by then).
+    t_max : float
+        Passed to :func:`simulate`.
+
+    Returns
+    -------
+    ReferenceImpact
+        The extrapolated contacts and e; ``error`` is the difference of the last two
+        extrapolations of e plus the mesh correction's size (absolute).
+
+    Raises
+    ------
+    ValueError
+        For a bad lambda, beta, support, nu or rtol.
+    RuntimeError
+        If rtol is not reached within ``max_halvings``, or the runs' contacts never agree.
+    """
+    _check(lam, beta, support, nu)
+    if not (isinstance(rtol, (int, float)) and 0.0 < rtol < 1.0):
+        raise ValueError(f"rtol must be a number in (0, 1), got {rtol!r}")
+    n = default_mesh(beta) if n_elements is None else int(n_elements)
+    runs = [simulate(lam, beta, support, nu, n_elements=n, dt=dt, t_max=t_max)]
+    extrapolated: list[ReferenceImpact] = []
+    for k in range(1, max_halvings + 1):
+        runs.append(simulate(lam, beta, support, nu, n_elements=n, dt=dt / 2**k, t_max=t_max))
+        if not _same_contacts(runs[-2:]):
+            extrapolated.clear()
+            continue
+        extrapolated.append(_richardson(runs[-1], runs[-2]))
+        if len(extrapolated) >= 2 and abs(extrapolated[-1].e - extrapolated[-2].e) \
+                <= rtol * abs(extrapolated[-1].e):
+            break
+    else:
+        raise RuntimeError(f"the second method did not reach rtol = {rtol:g} in e with "
+                           f"{max_halvings} halvings of dt = {dt:g}; last runs gave "
+                           f"e = {[r.e for r in runs[-3:]]}")
+    finer = simulate(lam, beta, support, nu, n_elements=2 * n, dt=dt, t_max=t_max)
+    if not _same_contacts([finer, runs[0]]):
+        raise RuntimeError("the mesh refinement changed the number of contacts; pass a finer "
+                           "n_elements")
+    best = _shift(extrapolated[-1], finer, runs[0])
+    error = abs(extrapolated[-1].e - extrapolated[-2].e) + abs(finer.e - runs[0].e)
+    return dataclasses.replace(best, error=error, n_elements=2 * n)

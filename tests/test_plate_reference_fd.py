@@ -1,0 +1,182 @@
+"""The second method for the finite plate (issue 37): finite elements in r and an energy-conserving
+implicit step, checked against independent routes only: the plate's closed-form static
+compliance, the Bessel frequency equations (and published roots), the conservation of energy,
+Zener's exact model in the large-plate limit, and the issue's glass-plate case with lambda and
+beta computed here from the materials."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+from scipy.special import iv, jv
+
+import zener_sym as zs
+from zener_sym.plate.reference_fd import hertz_secant, reference_impact, simulate
+from zener_sym.plate.reference_fe import plate_fe
+
+
+def _compliance_closed_form(support, nu):
+    """Centre deflection under a unit centre load, unit D and radius (Timoshenko & Woinowsky-
+    Krieger, Theory of Plates and Shells, Sec. 19): b^2/(16 pi D) clamped,
+    (3 + nu) b^2 / (16 pi (1 + nu) D) simply supported."""
+    if support == "clamped":
+        return 1.0 / (16.0 * math.pi)
+    return (3.0 + nu) / (16.0 * math.pi * (1.0 + nu))
+
+
+@pytest.mark.parametrize("support,nu", [("clamped", 0.3), ("simply-supported", 0.3),
+                                        ("simply-supported", 0.21)])
+def test_static_compliance_converges_to_closed_form(support, nu):
+    exact = _compliance_closed_form(support, nu)
+    errs = [abs(plate_fe(support, nu, n).static_compliance() / exact - 1.0) for n in (10, 20, 40)]
+    assert errs[2] < 5e-6
+    # the graded mesh converges at least as h^3
+    assert errs[1] < errs[0] / 8.0 and errs[2] < errs[1] / 8.0
+
+
+def _bessel_roots(support, nu, count):
+    """(k b)^2 of the axisymmetric modes, w = J0(k s) + c I0(k s): the frequency equations
+    solved here. Clamped: w(1) = w'(1) = 0 gives J0 I1 + I0 J1 = 0. Simply supported: w(1) = 0
+    and w'' + nu w' = 0 at s = 1."""
+    def clamped(k):
+        return jv(0, k) * iv(1, k) + iv(0, k) * jv(1, k)
+
+    def simply(k):
+        c = -jv(0, k) / iv(0, k)
+        return (-k * k * jv(0, k) + (1 - nu) * k * jv(1, k)) \
+            + c * (k * k * iv(0, k) - (1 - nu) * k * iv(1, k))
+    f = clamped if support == "clamped" else simply
+    ks = np.linspace(0.5, 15.0, 3000)
+    vals = [f(k) for k in ks]
+    roots = [brentq(f, a, b) for a, b, fa, fb in zip(ks, ks[1:], vals, vals[1:]) if fa * fb < 0]
+    return np.array(roots[:count]) ** 2
+
+
+@pytest.mark.parametrize("support,nu,published", [
+    ("clamped", 0.3, (10.2158, 39.771)),
+    # Leissa, Vibration of Plates (NASA SP-160), Table 2.4 for nu = 0.3 (the values 4.977, 29.76
+    # sometimes quoted belong to nu = 0.33)
+    ("simply-supported", 0.3, (4.935, 29.72)),
+    ("simply-supported", 0.21, None),
+])
+def test_lowest_frequencies(support, nu, published):
+    roots = _bessel_roots(support, nu, 3)
+    if published is not None:
+        assert roots[:2] == pytest.approx(published, rel=2e-4)
+    coarse = plate_fe(support, nu, 20, grading=1.0).frequencies(3)
+    fine = plate_fe(support, nu, 40, grading=1.0).frequencies(3)
+    assert fine == pytest.approx(roots, rel=2e-6)
+    # convergence as h^4 where the coarse mesh is not already at the eigensolver's round-off
+    visible = np.abs(coarse - roots) > 1e-6 * roots
+    assert np.all(np.abs(fine - roots)[visible] < np.abs(coarse - roots)[visible] / 10.0)
+    assert visible.sum() >= 2
+
+
+def test_hertz_secant_is_the_potential_difference():
+    phi = lambda d: 0.4 * max(d, 0.0) ** 2.5
+    for a, b in [(0.3, 0.7), (-0.2, 0.5), (0.5, -0.1), (0.2, 0.2 + 1e-9), (-1.0, -0.5)]:
+        if a == b:
+            continue
+        expected = (phi(b) - phi(a)) / (b - a) if abs(b - a) > 1e-6 else a**1.5
+        assert hertz_secant(a, b) == pytest.approx(expected, rel=1e-6, abs=1e-300)
+
+
+def _issue_case():
+    """lambda and beta of the issue's case, from the materials: a steel ball (E = 210 GPa,
+    nu = 0.30, rho = 7850 kg/m^3; the package's STEEL preset), radius 2.5 mm at 1 m/s, on a 1 mm
+    soda-lime glass plate (73 GPa, 0.21, 2500 kg/m^3; GLASS) clamped at radius 50 mm."""
+    R, v0, h, b = 2.5e-3, 1.0, 1e-3, 50e-3
+    E1, nu1, rho1, E2, nu2, rho2 = 210e9, 0.30, 7850.0, 73e9, 0.21, 2500.0
+    m = 4.0 / 3.0 * math.pi * R**3 * rho1
+    e_star = 1.0 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2)
+    k = 4.0 / 3.0 * e_star * math.sqrt(R)  # F = k delta^{3/2}
+    t0 = (m / (k * math.sqrt(v0))) ** 0.4  # m delta0/t0^2 = k delta0^{3/2}, delta0 = v0 t0
+    D = E2 * h**3 / (12.0 * (1.0 - nu2**2))
+    lam = m / (8.0 * t0 * math.sqrt(D * rho2 * h))
+    beta = t0 * math.sqrt(D / (rho2 * h)) / b**2
+    return lam, beta, t0, nu2
+
+
+def test_issue_case_parameters():
+    lam, beta, t0, _ = _issue_case()
+    assert lam == pytest.approx(2.27, abs=0.01)  # the issue's "lambda = 2.3"
+    assert 4e-3 < beta < 5e-3
+
+
+def test_energy_is_conserved_through_several_contacts():
+    lam, beta, _, nu = _issue_case()
+    r = simulate(lam, beta, "clamped", nu, n_elements=60, dt=0.05, track_energy=True)
+    assert len(r.contacts) >= 3
+    assert r.energy_drift < 1e-9
+    # what the ball lost is in the plate
+    assert r.e**2 + r.plate_energy == pytest.approx(1.0, abs=1e-9)
+
+
+def test_issue_case_five_contacts():
+    lam, beta, t0, nu = _issue_case()
+    r = simulate(lam, beta, "clamped", nu, n_elements=150, dt=0.025)
+    assert r.complete and len(r.contacts) == 5
+    assert r.e == pytest.approx(0.14, abs=0.005)
+    # the issue: the first contact is shortened to 56 us (Zener: 76 us)
+    first = r.contacts[0]
+    assert (first.end - first.start) * t0 * 1e6 == pytest.approx(56.0, abs=1.5)
+    speeds = [c.speed_after for c in r.contacts]
+    assert np.all(np.diff(speeds) > 0)
+    for c in r.contacts:
+        assert c.impulse > 0 and c.max_force > 0 and c.end > c.start
+    # contacts are disjoint and in order
+    assert all(a.end < b.start for a, b in zip(r.contacts, r.contacts[1:]))
+    # momentum: the impulses add up to the ball's change of velocity
+    assert sum(c.impulse for c in r.contacts) == pytest.approx(1.0 + r.e, rel=1e-12)
+
+
+def test_large_plate_first_contact_is_zener():
+    lam, beta = 0.5, 1e-3
+    runs = [simulate(lam, beta, "clamped", n_elements=300, dt=dt, max_contacts=1)
+            for dt in (0.01, 0.005)]
+    assert not runs[0].complete
+    zener = zs.summary(lam, model="exact")
+    (c1,), (c2,) = runs[0].contacts, runs[1].contacts
+    def extrapolated(field):
+        return getattr(c2, field) + (getattr(c2, field) - getattr(c1, field)) / 3.0
+    assert extrapolated("speed_after") == pytest.approx(zener.e, abs=2e-7)
+    # the end converges more slowly (delta'' ~ sqrt(delta) as the contact opens): order ~2.5
+    assert extrapolated("end") == pytest.approx(zener.tau_d, abs=3e-6)
+    assert extrapolated("max_force") == pytest.approx(zener.F_m, abs=1e-6)
+    assert extrapolated("impulse") == pytest.approx(zener.impulse, abs=2e-7)
+
+
+def test_simply_supported_plate_runs_to_the_end():
+    r = simulate(1.0, 0.01, "simply-supported", 0.3, n_elements=100, dt=0.025,
+                 track_energy=True)
+    assert r.complete and len(r.contacts) >= 1
+    assert r.energy_drift < 1e-9
+
+
+@pytest.mark.parametrize("kwargs,match", [
+    (dict(lam=0.0, beta=0.1, support="clamped"), "lam"),
+    (dict(lam=1.0, beta=-1.0, support="clamped"), "beta"),
+    (dict(lam=1.0, beta=0.1, support="free"), "support"),
+    (dict(lam=1.0, beta=0.1, support="clamped", nu=0.5), "nu"),
+    (dict(lam=float("nan"), beta=0.1, support="clamped"), "lam"),
+])
+def test_bad_input_is_refused(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        simulate(**kwargs)
+    with pytest.raises(ValueError, match=match):
+        reference_impact(**kwargs)
+
+
+@pytest.mark.slow
+def test_issue_case_converged():
+    lam, beta, _, nu = _issue_case()
+    r = reference_impact(lam, beta, "clamped", nu, rtol=1e-5)
+    assert r.complete and len(r.contacts) == 5
+    assert r.error < 1e-5 * r.e
+    # a finer step pair (dt/8 and dt/16 of the default) agrees within the reported error
+    fine = [simulate(lam, beta, "clamped", nu, n_elements=r.n_elements, dt=dt)
+            for dt in (0.0125 / 8, 0.0125 / 16)]
+    e_fine = fine[1].e + (fine[1].e - fine[0].e) / 3.0
+    assert e_fine == pytest.approx(r.e, abs=max(r.error, 1e-7))

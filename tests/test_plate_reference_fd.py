@@ -36,7 +36,7 @@ def test_static_compliance_converges_to_closed_form(support, nu):
     assert errs[1] < errs[0] / 8.0 and errs[2] < errs[1] / 8.0
 
 
-def _bessel_roots(support, nu, count):
+def _bessel_roots(support, nu, count, k_max=15.0):
     """(k b)^2 of the axisymmetric modes, w = J0(k s) + c I0(k s): the frequency equations
     solved here. Clamped: w(1) = w'(1) = 0 gives J0 I1 + I0 J1 = 0. Simply supported: w(1) = 0
     and w'' + nu w' = 0 at s = 1."""
@@ -48,9 +48,9 @@ def _bessel_roots(support, nu, count):
         return (-k * k * jv(0, k) + (1 - nu) * k * jv(1, k)) \
             + c * (k * k * iv(0, k) - (1 - nu) * k * iv(1, k))
     f = clamped if support == "clamped" else simply
-    ks = np.linspace(0.5, 15.0, 3000)
+    ks = np.linspace(0.5, k_max, int(200 * k_max))
     vals = [f(k) for k in ks]
-    roots = [brentq(f, a, b) for a, b, fa, fb in zip(ks, ks[1:], vals, vals[1:]) if fa * fb < 0]
+    roots = [brentq(f, a, b, xtol=1e-14) for a, b, fa, fb in zip(ks, ks[1:], vals, vals[1:]) if fa * fb < 0]
     return np.array(roots[:count]) ** 2
 
 
@@ -182,3 +182,39 @@ def test_issue_case_converged_and_its_error_estimate_holds():
     e_check = pair[1].e + (pair[1].e - pair[0].e) / 3.0
     assert e_check == pytest.approx(r.e, abs=r.error)
     assert e_check == pytest.approx(0.1416, abs=1e-4)
+
+
+def _modal_e(lam, beta, n_modes):
+    """e of the issue's clamped case from the plate's modes (a third route, independent of both
+    this module and the package's modal solver): the clamped circle's axisymmetric modes
+    phi = J0(k s) - (J0(k)/I0(k)) I0(k s) with k from J0 I1 + I0 J1 = 0, their participation
+    psi = phi(0)^2 / int phi^2 dA, the static residual of the modes left out
+    (8 lam/beta)(1/(16 pi) - sum psi/k^4), integrated by DOP853 at rtol 1e-11."""
+    from scipy.integrate import quad, solve_ivp
+    k = np.sqrt(_bessel_roots("clamped", 0.3, n_modes, k_max=(n_modes + 2) * math.pi))
+    ratio = jv(0, k) / iv(0, k)
+    mass = [quad(lambda s, kk=kk, c=c: (jv(0, kk * s) - c * iv(0, kk * s)) ** 2 * 2 * math.pi * s,
+                 0.0, 1.0, limit=400, epsabs=1e-14)[0] for kk, c in zip(k, ratio)]
+    psi = (1.0 - ratio) ** 2 / np.array(mass)
+    omega, c = beta * k**2, 8.0 * lam * beta * psi
+    c_res = 8.0 * lam / beta * (1.0 / (16.0 * math.pi) - np.sum(psi / k**4))
+
+    def rhs(_, z):
+        y = z[2:2 + n_modes]
+        gap = z[0] - y.sum()
+        force = 0.0 if gap <= 0 else brentq(lambda f: f - (gap - c_res * f) ** 1.5, 0.0, gap**1.5)
+        return np.concatenate([[z[1], -force], z[2 + n_modes:], c * force - omega**2 * y])
+    z0 = np.zeros(2 + 2 * n_modes)
+    z0[1] = 1.0
+    sol = solve_ivp(rhs, (0.0, 120.0), z0, method="DOP853", rtol=1e-11, atol=1e-13, max_step=0.05)
+    return -sol.y[1, -1]
+
+
+@pytest.mark.slow
+def test_issue_case_agrees_with_a_modal_solution():
+    lam, beta, _, nu = _issue_case()
+    pair = [simulate(lam, beta, "clamped", nu, n_elements=223, dt=dt)
+            for dt in (0.003125, 0.0015625)]
+    e_fd = pair[1].e + (pair[1].e - pair[0].e) / 3.0
+    # 60 modes: the modal truncation moved e by 3e-7 from 40 modes
+    assert e_fd == pytest.approx(_modal_e(lam, beta, 60), abs=1e-6)

@@ -132,6 +132,15 @@ def test_issue_case_five_contacts():
     assert sum(c.impulse for c in r.contacts) == pytest.approx(1.0 + r.e, rel=1e-12)
 
 
+def test_no_contact_after_the_proved_end():
+    lam, beta, _, nu = _issue_case()
+    ended = simulate(lam, beta, "clamped", nu, n_elements=60, dt=0.05)
+    # beyond the end: three periods of the fundamental mode (2 pi / (beta 10.2158) each)
+    longer = simulate(lam, beta, "clamped", nu, n_elements=60, dt=0.05,
+                      linger=3 * 2 * math.pi / (beta * 10.2158))
+    assert longer.contacts == ended.contacts and longer.e == ended.e
+
+
 def test_large_plate_first_contact_is_zener():
     lam, beta = 0.5, 1e-3
     runs = [simulate(lam, beta, "clamped", n_elements=300, dt=dt, max_contacts=1)

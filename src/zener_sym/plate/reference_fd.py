@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from typing import Callable
 
 from .reference_fd_march import hertz_secant, march
 from .reference_fe import plate_fe
@@ -88,6 +89,9 @@ class ReferenceImpact:
     complete : bool
         True when the run reached the proved end (no contact can follow); False when it was
         stopped after ``max_contacts`` contacts, and ``e`` is the speed after the last of them.
+    contact_errors : tuple of ReferenceContact
+        The estimated absolute error of every field of every contact, estimated as ``error``
+        (empty for a single run).
     """
 
     contacts: tuple[ReferenceContact, ...]
@@ -98,6 +102,7 @@ class ReferenceImpact:
     n_elements: int
     dt: float
     complete: bool = True
+    contact_errors: tuple[ReferenceContact, ...] = ()
 
 
 def _check(lam: float, beta: float, support: str, nu: float) -> None:
@@ -113,7 +118,8 @@ def _check(lam: float, beta: float, support: str, nu: float) -> None:
 
 def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elements: int = 200,
              dt: float = 0.01, grading: float = 2.0, t_max: float = 1e5,
-             track_energy: bool = False, max_contacts: int = 0) -> ReferenceImpact:
+             track_energy: bool = False, max_contacts: int = 0,
+             linger: float = 0.0) -> ReferenceImpact:
     """One run of the second method on one mesh with one step (no extrapolation).
 
     Parameters
@@ -138,6 +144,9 @@ def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elemen
         Evaluate the total energy after every step and report its largest relative drift.
     max_contacts : int
         Stop after this many contacts (0: run to the proved end).
+    linger : float
+        Keep stepping this long (in tau) past the proved end: a test of the proof, after which
+        no contact may follow.
 
     Returns
     -------
@@ -149,7 +158,8 @@ def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elemen
         raise ValueError(f"dt must be a finite number > 0, got {dt!r}")
     fe = plate_fe(support, nu, n_elements, grading)
     raw, p_final, e_plate, complete, drift = march(fe, float(lam), float(beta), dt, t_max,
-                                                   int(max_contacts), track_energy)
+                                                   int(max_contacts), track_energy,
+                                                   float(linger))
     return ReferenceImpact(tuple(ReferenceContact(*c) for c in raw), -p_final, e_plate / 0.5,
                            0.0, drift, int(n_elements), dt, complete)
 
@@ -254,5 +264,13 @@ def reference_impact(lam: float, beta: float, support: str, nu: float = 0.3, *,
         raise RuntimeError("the mesh refinement changed the number of contacts; pass a finer "
                            "n_elements")
     best = _shift(ex[-1], finer, runs[0])
-    return dataclasses.replace(best, error=max(diffs) + abs(finer.e - runs[0].e),
+
+    def err(get: Callable[[ReferenceImpact], float]) -> float:
+        return float(max(abs(get(a) - get(b)) for a, b in zip(ex[-3:], ex[-2:]))
+                     + abs(get(finer) - get(runs[0])))
+    def field(i: int, k: str) -> Callable[[ReferenceImpact], float]:
+        return lambda r: float(getattr(r.contacts[i], k))
+    contact_errors = tuple(ReferenceContact(*(err(field(i, k)) for k in _FIELDS))
+                           for i in range(len(best.contacts)))
+    return dataclasses.replace(best, error=err(lambda r: r.e), contact_errors=contact_errors,
                                n_elements=2 * n)

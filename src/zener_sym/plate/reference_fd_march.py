@@ -196,15 +196,18 @@ def _peak(samples: list[tuple[float, float]]) -> float:
 
 def march(fe: AxisymmetricPlateFE, lam: float, beta: float, dt: float, t_max: float,
           max_contacts: int = 0,
-          track_energy: bool = False) -> tuple[list[RawContact], float, float, bool, float]:
+          track_energy: bool = False,
+          linger: float = 0.0) -> tuple[list[RawContact], float, float, bool, float]:
     """Step from the first touch (tau = 0) to the proved end, or to the end of contact number
     ``max_contacts`` (if > 0). Returns the contacts, the ball's final velocity, the plate's
     energy, whether the proved end was reached, and (with ``track_energy``) the largest relative
-    change of the total energy after any step (else 0)."""
+    change of the total energy after any step (else 0). ``linger`` > 0 keeps stepping that long
+    past the proved end (a test of the proof: no contact may follow)."""
     state, regular = _State(fe, lam, beta), _Factor(fe, lam, beta, dt)
     compliance = 8.0 * lam / beta * fe.static_compliance()
     contacts: list[RawContact] = []
     start, p_before, samples, bound, drift = 0.0, 1.0, [(0.0, 0.0)], math.inf, 0.0
+    stop_at = math.inf
     while state.t < t_max:
         du, force, d_new = state.trial(regular)
         if samples and d_new <= 0.0:  # the contact ends within this step: land on its end
@@ -223,6 +226,8 @@ def march(fe: AxisymmetricPlateFE, lam: float, beta: float, dt: float, t_max: fl
         if track_energy:  # the initial energy is the ball's, 1/2
             drift = max(drift, abs(state.energy() - 0.5) / 0.5)
         if not samples and state.p < 0.0 and state.x < -bound:
+            stop_at = min(stop_at, state.t + linger)
+        if state.t >= stop_at:
             return contacts, state.p, state.plate_energy(), True, drift
         if max_contacts and len(contacts) == max_contacts:
             return contacts, state.p, state.plate_energy(), False, drift

@@ -125,7 +125,7 @@ class _State:
         rhs = dsbmv(3, 2.0 / h, self.mass_band, self.v, lower=0)
         rhs = dsbmv(3, -self.beta**2, self.stiff_band, self.u, beta=1.0, y=rhs, lower=0)
         du = fac.solve(rhs)
-        d_star = self.x + h * self.p - self.u[0] - du[0]
+        d_star = float(self.x + h * self.p - self.u[0] - du[0])
         force = 0.0
         if contact:
             # G from the root, and delta+ from G: the energy balance needs G to be the secant

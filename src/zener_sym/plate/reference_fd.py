@@ -266,33 +266,45 @@ def reference_impact(lam: float, beta: float, support: str, nu: float = 0.3, *,
         raise ValueError(f"rtol must be a number in (0, 0.1), got {rtol!r}")
     n = default_mesh(beta) if n_elements is None else int(n_elements)
     dt0 = min(0.05, 0.0125 * math.sqrt(rtol / 1e-5)) if dt is None else float(dt)
-    runs = [simulate(lam, beta, support, nu, n_elements=n, dt=dt0, t_max=t_max)]
-    ex: list[ReferenceImpact] = []
-    for k in range(1, max_halvings + 1):
-        runs.append(simulate(lam, beta, support, nu, n_elements=n, dt=dt0 / 2**k, t_max=t_max))
-        if not _same_contacts(runs[-2:]):
-            ex.clear()
-            continue
-        ex.append(_richardson(runs[-1], runs[-2]))
-        diffs = [abs(a.e - b.e) for a, b in zip(ex[-3:], ex[-2:])] if len(ex) >= 3 else []
-        if diffs and max(diffs) <= rtol * abs(ex[-1].e):
-            break
-    else:
-        raise RuntimeError(f"the second method did not reach rtol = {rtol:g} in e with "
-                           f"{max_halvings} halvings of dt = {dt0:g}; the last runs gave "
-                           f"e = {[float(r.e) for r in runs[-3:]]}")
-    finer = simulate(lam, beta, support, nu, n_elements=2 * n, dt=dt0, t_max=t_max)
-    if not _same_contacts([finer, runs[0]]):
+    def run(n_el: int, step: float) -> ReferenceImpact:
+        return simulate(lam, beta, support, nu, n_elements=n_el, dt=step, t_max=t_max)
+    base, ex = _converge_in_step(run, n, dt0, rtol, max_halvings)
+    finer = run(2 * n, base.dt)
+    if not _same_contacts([finer, base]):
         raise RuntimeError("the mesh refinement changed the number of contacts; pass a finer "
                            "n_elements")
-    best = _shift(ex[-1], finer, runs[0])
+    best = _shift(ex[-1], finer, base)
 
     def err(get: Callable[[ReferenceImpact], float]) -> float:
         return float(max(abs(get(a) - get(b)) for a, b in zip(ex[-3:], ex[-2:]))
-                     + abs(get(finer) - get(runs[0])))
+                     + abs(get(finer) - get(base)))
+
     def field(i: int, k: str) -> Callable[[ReferenceImpact], float]:
         return lambda r: float(getattr(r.contacts[i], k))
     contact_errors = tuple(ReferenceContact(*(err(field(i, k)) for k in _FIELDS))
                            for i in range(len(best.contacts)))
     return dataclasses.replace(best, error=err(lambda r: r.e), contact_errors=contact_errors,
                                n_elements=2 * n)
+
+
+def _converge_in_step(run: Callable[[int, float], ReferenceImpact], n: int, dt0: float,
+                      rtol: float, max_halvings: int) -> tuple[ReferenceImpact,
+                                                                list[ReferenceImpact]]:
+    """Halve the step until three successive Richardson extrapolations of e agree to rtol;
+    returns the coarsest run of the final streak of runs with the same contacts (where the mesh
+    correction is measured) and the extrapolations of that streak."""
+    runs = [run(n, dt0)]
+    base = runs[0]
+    ex: list[ReferenceImpact] = []
+    for k in range(1, max_halvings + 1):
+        runs.append(run(n, dt0 / 2**k))
+        if not _same_contacts(runs[-2:]):  # a grazing contact came or went: start again
+            base, ex = runs[-1], []
+            continue
+        ex.append(_richardson(runs[-1], runs[-2]))
+        if len(ex) >= 3 and max(abs(a.e - b.e) for a, b in zip(ex[-3:], ex[-2:])) \
+                <= rtol * abs(ex[-1].e):
+            return base, ex
+    raise RuntimeError(f"the second method did not reach rtol = {rtol:g} in e with "
+                       f"{max_halvings} halvings of dt = {dt0:g}; the last runs gave "
+                       f"e = {[float(r.e) for r in runs[-3:]]}")

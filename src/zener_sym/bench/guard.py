@@ -196,7 +196,9 @@ def _machine() -> str:
 def _commit(tree: pathlib.Path) -> str:
     r = subprocess.run(["git", "-C", str(tree), "rev-parse", "--short", "HEAD"],
                        capture_output=True, text=True)
-    dirty = subprocess.run(["git", "-C", str(tree), "status", "--porcelain", "--untracked-files=no"],
+    # the baseline file itself does not count as a change to what was measured
+    dirty = subprocess.run(["git", "-C", str(tree), "status", "--porcelain", "--untracked-files=no",
+                            "--", ".", f":!*/{BASELINE.name}"],
                            capture_output=True, text=True).stdout.strip()
     return (r.stdout.strip() or "unknown commit") + (" with local changes" if dirty else "")
 

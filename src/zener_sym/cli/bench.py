@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import pathlib
+import sys
 
 from ..bench import guard, reference
 from ..bench.suite import run
@@ -33,13 +34,14 @@ def add_parser(sub: Subparsers) -> None:
 
     def go(args: argparse.Namespace) -> int:
         if args.guard:
-            if args.runs < 1:
-                p.error(f"--runs must be at least 1, not {args.runs}")
             try:
+                if args.runs < 1:
+                    raise ValueError(f"--runs must be at least 1, not {args.runs}")
                 return guard.main(args.tree, args.entries.split(",") if args.entries else None,
                                   record_runs=args.runs if args.record else 0)
             except ValueError as err:
-                p.error(str(err))
+                print(f"zener-sym bench: error: {err}", file=sys.stderr)
+                return 2
         if args.build_reference:
             reference.write_cache(reference.compute())
             print(f"wrote {reference.CACHE}")

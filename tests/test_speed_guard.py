@@ -203,3 +203,9 @@ def test_a_public_function_made_slower_fails_its_entry(monkeypatch):
                             log=lambda s: None)[0]
     assert not after.ok, after.message
     np.testing.assert_array_equal(slow_summary(np.array([0.5])).e, fast(np.array([0.5])).e)
+
+
+def test_ci_runs_the_guard_after_the_tests():
+    lines = (pathlib.Path(__file__).resolve().parents[1] / ".ci" / "run").read_text().splitlines()
+    tests = next(i for i, line in enumerate(lines) if "-m pytest" in line)
+    assert ".venv/bin/zener-sym bench --guard" in lines[tests + 1:]

@@ -12,7 +12,8 @@ so that it can measure any checkout: ``python guard_measure.py`` run with anothe
 first on the import path (``zener_sym.bench.guard.measure_tree`` arranges it) prints that tree's
 ratios as JSON. It is a script as well as a module for that reason: no relative imports.
 
-How time is taken (``ratio``): one warm-up call of each side; then ``rounds`` rounds, each timing
+Each entry is measured in a child forked for it (``in_child``), so that the entries before it
+leave no trace in its time. How time is taken (``ratio``): one warm-up call of each side; then ``rounds`` rounds, each timing
 the guarded and the reference side once, in alternating order, each sample a batch of calls long
 enough (about ``SAMPLE_S``) for the clock; the CPU time of this process (``time.process_time``),
 since on a shared machine wall time mostly measures the other processes. The ratio is that of
@@ -21,7 +22,9 @@ the fastest samples: load only ever adds time, so the fastest sample is the leas
 from __future__ import annotations
 
 import ctypes
+import functools
 import json
+import os
 import pathlib
 import shutil
 import subprocess
@@ -268,19 +271,50 @@ def ratio(pair: Pair, rounds: int = ROUNDS) -> dict[str, float]:
     return {"ratio": min(g) / min(r), "guarded_s": min(g), "reference_s": min(r)}
 
 
-def measure(names: list[str] | None = None, rounds: int = ROUNDS) -> dict[str, dict[str, Any]]:
-    """Each named entry's ``ratio`` (default: every entry); an entry the measured tree cannot
-    run (no such API, no C compiler) gets ``error`` instead."""
-    out: dict[str, dict[str, Any]] = {}
-    for name in names or list(ENTRIES):
-        what, build = ENTRIES[name]
+def measure_one(name: str, rounds: int = ROUNDS) -> dict[str, Any]:
+    """One entry's ``ratio``; ``error`` instead when the measured tree cannot run it (no such
+    API, no C compiler)."""
+    what, build = ENTRIES[name]
+    try:
+        pair = build()
+    except Exception as err:  # noqa: BLE001  an old tree may lack the API: say so, go on
+        return {"what": what, "error": f"{type(err).__name__}: {err}"}
+    return {"what": what, **ratio(pair, rounds)}
+
+
+def in_child(fn: Callable[[], dict[str, Any]]) -> dict[str, Any]:
+    """``fn()`` in a forked child (where fork exists): each entry starts from the same state of
+    the allocator, whatever the entries before it freed. An entry's time depends on it: glibc
+    raises its mmap threshold once a large block is freed, after which temporaries of a few
+    MB stop faulting in fresh pages; measured after the 100 000-point histories, c2ea95c's
+    summary of 1000 lambda took half the time it takes in a fresh process."""
+    if not hasattr(os, "fork"):
+        return fn()
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: measure, send, leave without running the parent's clean-up
         try:
-            pair = build()
-        except Exception as err:  # noqa: BLE001  an old tree may lack the API: say so, go on
-            out[name] = {"what": what, "error": f"{type(err).__name__}: {err}"}
-            continue
-        out[name] = {"what": what, **ratio(pair, rounds)}
-    return out
+            text = json.dumps(fn())
+        except BaseException as err:  # noqa: BLE001  the parent reports it
+            text = json.dumps({"error": f"{type(err).__name__}: {err}"})
+        with os.fdopen(write, "w") as f:
+            f.write(text)
+        os._exit(0)
+    os.close(write)
+    with os.fdopen(read) as f:
+        text = f.read()
+    os.waitpid(pid, 0)
+    result: dict[str, Any] = json.loads(text) if text else {"error": "the measuring child died"}
+    return result
+
+
+def measure(names: list[str] | None = None, rounds: int = ROUNDS) -> dict[str, dict[str, Any]]:
+    """Each named entry (default: every entry) measured by ``measure_one``, each in a child of
+    this process (``in_child``), with the package imported once before."""
+    import zener_sym  # noqa: F401  imported here once, not in every child
+
+    return {name: in_child(functools.partial(measure_one, name, rounds))
+            for name in names or list(ENTRIES)}
 
 
 if __name__ == "__main__":  # the measurement of whatever tree ``import zener_sym`` finds

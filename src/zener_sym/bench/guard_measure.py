@@ -66,12 +66,7 @@ def chebval_reference(n: int, degree: int, fields: int) -> Callable[[], object]:
     x = np.linspace(-1.0, 1.0, n)
     c = np.random.default_rng(36).standard_normal((degree + 1, fields))
     blocks = [x[a:a + REFERENCE_BLOCK] for a in range(0, n, REFERENCE_BLOCK)]
-    return lambda: [reference_chebval(b, c) for b in blocks]
-
-
-def reference_chebval(x: np.ndarray, c: np.ndarray) -> np.ndarray:
-    """``chebval(x, c)`` (a function of its own so that a test can slow the reference)."""
-    return chebyshev.chebval(x, c)
+    return lambda: [chebyshev.chebval(b, c) for b in blocks]
 
 
 def _summary_lambdas(n: int) -> np.ndarray:

@@ -209,3 +209,12 @@ def test_ci_runs_the_guard_after_the_tests():
     lines = (pathlib.Path(__file__).resolve().parents[1] / ".ci" / "run").read_text().splitlines()
     tests = next(i for i, line in enumerate(lines) if "-m pytest" in line)
     assert ".venv/bin/zener-sym bench --guard" in lines[tests + 1:]
+
+
+def test_a_checkout_that_cannot_be_measured_fails_the_guard_in_one_line(tmp_path, capsys):
+    tree = fake_tree(tmp_path / "broken", "raise SystemExit('toy refuses')\n")
+    assert main(["bench", "--guard", "--tree", str(tree), "--entries",
+                 "exact_summary_plate_1k"]) == 1
+    err = capsys.readouterr().err
+    assert "the guard's measurement failed in" in err and "toy refuses" in err
+    assert len(err.strip().splitlines()) == 1

@@ -25,6 +25,7 @@ import platform
 import statistics
 import subprocess
 import sys
+import tempfile
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -41,6 +42,9 @@ RETRIES = 2
 #: waits, on a busy machine, for the second one to be scheduled (5-30 ms against 0.06 ms for
 #: ``numerics.sqrt_integrals.KsSeries``'s before issue 36), which is load, not code.
 ONE_THREAD = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
+
+#: Longest a measuring process may take, seconds (about 20 s on two busy cores).
+TIMEOUT_S = 600
 
 #: The committed baselines.
 BASELINE = pathlib.Path(__file__).resolve().parents[1] / "data" / "speed_baseline.json"
@@ -101,8 +105,14 @@ def measure_tree(names: Sequence[str], tree: pathlib.Path | None = None,
     one installed here), by this checkout's ``guard_measure``."""
     cmd = [sys.executable, "-c", _BOOT, str(tree or ""), guard_measure.__file__, str(rounds),
            *names]
-    r = subprocess.run(cmd, capture_output=True, text=True, cwd=pathlib.Path.home(),
-                       env={**os.environ, **ONE_THREAD})
+    # an empty folder as the working directory: ``-c`` puts it first on the import path
+    with tempfile.TemporaryDirectory(prefix="zs_guard_") as cwd:
+        try:
+            r = subprocess.run(cmd, capture_output=True, text=True, cwd=cwd,
+                               env={**os.environ, **ONE_THREAD}, timeout=TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            raise RuntimeError(f"the guard's measurement took more than {TIMEOUT_S} s"
+                               + (f" in {tree}" if tree else "")) from None
     if r.returncode != 0:
         tail = r.stderr.strip().splitlines()[-1:] or ["no message"]
         raise RuntimeError(f"the guard's measurement failed{f' in {tree}' if tree else ''}: "

@@ -42,6 +42,9 @@ def add_parser(sub: Subparsers) -> None:
             except ValueError as err:
                 print(f"zener-sym bench: error: {err}", file=sys.stderr)
                 return 2
+            except RuntimeError as err:  # the measurement itself failed: the guard fails
+                print(f"zener-sym bench: {err}", file=sys.stderr)
+                return 1
         if args.build_reference:
             reference.write_cache(reference.compute())
             print(f"wrote {reference.CACHE}")

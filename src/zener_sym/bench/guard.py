@@ -256,9 +256,12 @@ def main(tree: pathlib.Path | None = None, names: Sequence[str] | None = None,
     if record_runs:
         chosen = list(names or guard_measure.ENTRIES)
         root = tree or pathlib.Path(guard_measure.__file__).resolve().parents[3]
+        made_from = _commit(root)
+        # the checkout named by its commit, not by this machine's path to it
         command = ("zener-sym bench --guard --record " + f"--runs {record_runs}"
-                   + (f" --tree {tree}" if tree else "") + f" --entries {','.join(chosen)}")
-        entries = record(chosen, measure, record_runs, _commit(root), command, baseline_path)
+                   + (f" --tree <checkout of {made_from}>" if tree else "")
+                   + f" --entries {','.join(chosen)}")
+        entries = record(chosen, measure, record_runs, made_from, command, baseline_path)
         for n in chosen:
             print(f"{n}: baseline {entries[n]['ratio']} (runs {entries[n]['runs']})")
         print(f"wrote {baseline_path}")

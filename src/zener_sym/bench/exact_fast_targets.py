@@ -85,9 +85,13 @@ def ham1_scalar_summary_target() -> dict[str, Any]:
 
 
 def pulse_history_targets(m: int = 200, k: int = 500) -> list[dict[str, Any]]:
-    """Issue 14: ham0, hunter and reed histories no slower than exact's on the same grid
-    (m lambda in [0, 2.4] x k tau up to 1.05 of ham0's tau_d), the four timed in alternation;
-    ratio = time of exact / time of the model (required >= 1)."""
+    """Issue 14: hunter and reed histories no slower than exact's on the same grid
+    (m lambda in [0, 2.4] x k tau up to 1.05 of ham0's tau_d), timed in alternation with
+    ham0's and exact's; ratio = time of exact / time of the model (required >= 1).
+
+    ham0's row is shown, not judged (issue 36): since issue 14 the exact tables cost ham0's time
+    a point, so "not slower" sat within one run's noise and a first run could read "met: no"
+    (docs/benchmarks.md); ``zener-sym bench --guard`` guards ham0's history against numpy."""
     import zener_sym as zs
 
     lams = np.linspace(0.0, 2.4, m)
@@ -99,9 +103,11 @@ def pulse_history_targets(m: int = 200, k: int = 500) -> list[dict[str, Any]]:
     # timed in alternation: each ratio's two sides see the same state of the process
     times = alternating_median_times([history_of(name) for name in names])
     t_exact = times[0]
-    return [{"target": f"{name} history (every field) vs exact history",
+    return [{"target": f"{name} history (every field) vs exact history"
+                       + (", shown, not judged" if name == "ham0" else ""),
              "grid": f"{m} lambda x {k} tau", "fast_s": t, "slow_s": t_exact,
-             "ratio": t_exact / t, "required": 1.0} for name, t in zip(names[1:], times[1:])]
+             "ratio": t_exact / t, "required": None if name == "ham0" else 1.0}
+            for name, t in zip(names[1:], times[1:])]
 
 
 def large_lambda_summary_target(n: int = 2000) -> dict[str, Any]:
@@ -123,7 +129,7 @@ def issue14_targets(quick: bool = False) -> list[dict[str, Any]]:
     rows = [history_vs_dop853_target(quick=quick), ham1_scalar_summary_target(),
             *pulse_history_targets(), large_lambda_summary_target()]
     for r in rows:
-        r["met"] = r["ratio"] >= r["required"]
+        r["met"] = None if r["required"] is None else r["ratio"] >= r["required"]
     return rows
 
 

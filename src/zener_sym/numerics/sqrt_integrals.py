@@ -262,6 +262,14 @@ def _ks_pieces() -> FloatArray:
     return pieces
 
 
+#: Rates per matrix product in ``KsSeries``: a product of a piece's [theta degree, N_RATE]
+#: coefficients with this many rates stays under 2^18 multiply-adds, below which OpenBLAS runs
+#: it on one thread. One product for all pieces and rates ran on two threads: on a busy
+#: two-core machine the wait for the second thread took 5-30 ms, against 0.06 ms on one
+#: (issue 36; the ham0 history is 3 ms).
+_RATES_PER_PRODUCT = 512
+
+
 class KsSeries:
     """K_s(u[i], theta) from the series for a fixed set of rates u (all in [0, A_SERIES]).
 
@@ -290,8 +298,12 @@ class KsSeries:
         n = self.n = u.size
         Ta = np.polynomial.chebyshev.chebvander(2.0 * u / A_SERIES - 1.0, N_RATE - 1)
         pieces = _ks_pieces()
-        # [theta degree, piece, rate], as one matrix product (a stacked one is 2x slower here)
-        c = (pieces.reshape(-1, N_RATE) @ Ta.T).reshape(*pieces.shape[:2], n)
+        # [theta degree, piece, rate]: one small matrix product per piece and block of rates
+        c = np.empty((*pieces.shape[:2], n))
+        step = _RATES_PER_PRODUCT
+        for q in range(pieces.shape[1]):
+            for a in range(0, n, step):
+                np.matmul(pieces[:, q], Ta[a:a + step].T, out=c[:, q, a:a + step])
         # K_s(a, pi) = (pi/2)^{5/2} (G + H) at theta = r = pi/2: G's last piece at x = 1, H's
         # (stored as piece N_PIECES, in -x and with the sign flipped) at x = -1
         alt = (-1.0) ** np.arange(c.shape[0])[:, None]

@@ -386,6 +386,18 @@ def _lambda_series_fresh(root: Path | None) -> Texts:
     return {"src/zener_sym/data/lambda_series.json": ls.coefficients_json(ctx)}
 
 
+def _plate_criterion_fresh(root: Path | None) -> Texts:
+    from .scene import plate_criterion_build as pcb
+
+    return {"src/zener_sym/data/plate_criterion.json": pcb.dumps(pcb.build())}
+
+
+def _plate_criterion_same(rel: str, old: str, new: str) -> list[str]:
+    from .scene import plate_criterion_build as pcb
+
+    return pcb.compare(json.loads(old), json.loads(new))
+
+
 def _lammps_docs() -> ModuleType:
     from .bench import lammps_docs
 
@@ -438,6 +450,10 @@ ARTEFACTS: tuple[Artefact, ...] = (
     Artefact("envelopes", "measured error envelopes that select_model reads",
              ("src/zener_sym/data/envelopes.json",), _envelopes_fresh, _envelopes_same,
              needs_checkout=False, alias="envelopes"),
+    Artefact("plate-criterion", "the finite-plate model against Zener's on a (lambda, beta) "
+             "grid: the criterion Scene.result chooses by",
+             ("src/zener_sym/data/plate_criterion.json",), _plate_criterion_fresh,
+             _plate_criterion_same, needs_checkout=False),
     Artefact("bench-reference", "the benchmark's mpmath reference",
              ("src/zener_sym/data/bench_reference.json",), _bench_reference_fresh,
              _bench_reference_same, needs_checkout=False, alias="bench --build-reference"),

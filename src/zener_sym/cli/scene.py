@@ -30,6 +30,13 @@ def _number(text: str, field: str) -> float:
         raise ValueError(f"{field}: {text!r} is not a number") from None
 
 
+def _count(text: str, field: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise ValueError(f"{field}: {text!r} is not a whole number") from None
+
+
 def _material(spec: str, which: str, yield_text: str | None) -> Material:
     """A preset name, or 'E,nu,rho' with units (e.g. '210GPa,0.3,7850kg/m^3')."""
     if spec.lower() in PRESETS:
@@ -143,10 +150,14 @@ def run(args: argparse.Namespace, out: Out = print) -> int:
     try:
         plot = None if args.plot is None else _plot_path(args.plot)
         scene = scene_from_args(args)
+        options = {} if args.n_modes is None else {"n_modes": _count(args.n_modes, "--n-modes")}
+        if options and args.model != "finite-plate":
+            raise ValueError("--n-modes goes with --model finite-plate")
         with warnings.catch_warnings():
             # listed in the table; not printed twice
             warnings.simplefilter("ignore", ZenerWarning)
-            res = scene.result(model=args.model, rtol=args.rtol, quantity=args.quantity)
+            res = scene.result(model=args.model, rtol=args.rtol, quantity=args.quantity,
+                               **options)
     except ValueError as exc:
         print(f"zener-sym scene: error: {exc}", file=sys.stderr)
         return 2
@@ -209,6 +220,9 @@ def add_parser(sub: Subparsers) -> None:
     p.add_argument("--quantity", default="all",
                    help="quantity the accuracy is for (default all reported quantities)")
     p.add_argument("--model", default=None, help="force a model instead of choosing one")
+    p.add_argument("--n-modes", default=None,
+                   help="with --model finite-plate: the number of plate modes (default: chosen "
+                        "for the accuracy)")
     p.add_argument("--markdown", action="store_true", help="print the table as markdown")
     p.add_argument("--json", action="store_true",
                    help="print one JSON object: model, lam, e, contacts (start_s, end_s, "

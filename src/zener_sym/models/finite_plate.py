@@ -110,8 +110,8 @@ def check_plate_options(options: Mapping[str, Any]) -> dict[str, Any]:
         integer this machine can hold (:func:`max_modes`).
     """
     if "beta" not in options or "support" not in options:
-        raise ValueError("model 'finite-plate' needs the options beta (the plate-size "
-                         "parameter, > 0) and support (clamped or simply-supported)")
+        raise ValueError("model 'finite-plate' needs, besides lambda, the options beta (the "
+                         "plate-size parameter, > 0) and support (clamped or simply-supported)")
     beta = _real(options["beta"], "beta", 0.0, math.inf)
     shape = options.get("shape", "circle")
     if not isinstance(shape, str) or shape not in SHAPES:

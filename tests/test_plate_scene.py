@@ -1,0 +1,161 @@
+"""Bounded plates in scenes (issue 37, section 3): inputs, refusals, the CLI contract.
+
+The dimensionless plate parameters are recomputed here from their definitions (Kirchhoff's
+D = E H^3 / (12 (1 - nu^2)), Zener's t_0 from Eq. 9 with the derived exponent 2/5) rather than
+read from the scene's own helpers.
+"""
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+import zener_sym as zs
+from zener_sym import cli
+
+GLASS_50 = dict(radius="2.5 mm", thickness="1 mm", v0="1 m/s", plate_radius="50 mm")
+SCENE = ["scene", "--sphere", "steel", "--plate", "glass", "--radius", "2.5mm",
+         "--thickness", "1mm", "--v0", "1m/s"]
+
+
+def _t0_and_c(R, H, v0, s, p):
+    """Zener's t_0 and sqrt(D/(rho H)) from the definitions."""
+    m = 4.0 / 3.0 * math.pi * R**3 * s.rho
+    E_star = 1.0 / ((1 - s.nu**2) / s.E + (1 - p.nu**2) / p.E)
+    t0 = (m / (4.0 / 3.0 * E_star * math.sqrt(R) * math.sqrt(v0))) ** 0.4
+    D = p.E * H**3 / (12.0 * (1.0 - p.nu**2))
+    return t0, math.sqrt(D / (p.rho * H)), m, D
+
+
+def test_circle_in_zeners_scales():
+    sc = zs.Scene("steel", "glass", support="clamped", **GLASS_50)
+    t0, c, m, D = _t0_and_c(2.5e-3, 1e-3, 1.0, zs.STEEL, zs.GLASS)
+    assert sc.beta == pytest.approx(t0 * c / 0.05**2, rel=1e-13)
+    # lambda = m / (8 t_0 sqrt(D rho h)): the contract's form of Eq. (11)
+    assert sc.lam == pytest.approx(m / (8 * t0 * math.sqrt(D * zs.GLASS.rho * 1e-3)), rel=1e-13)
+    o = sc.plate_options()
+    assert (o["shape"], o["support"], o["impact"], o["nu"], o["loss"]) == \
+        ("circle", "clamped", (0.5, 0.5), zs.GLASS.nu, 0.0)
+
+
+def test_rectangle_in_zeners_scales():
+    sc = zs.Scene("steel", "steel", radius="5 mm", thickness="2 mm", v0="1 m/s",
+                  plate_size=("60 mm", "40 mm"), impact_at=("15 mm", "30 mm"),
+                  support="simply-supported")
+    t0, c, _, _ = _t0_and_c(5e-3, 2e-3, 1.0, zs.STEEL, zs.STEEL)
+    assert sc.beta == pytest.approx(t0 * c / (0.06 * 0.04), rel=1e-13)   # L^2 = a b
+    o = sc.plate_options()
+    assert o["aspect"] == pytest.approx(1.5, rel=1e-15)
+    assert o["impact"] == pytest.approx((0.25, 0.75), rel=1e-15)
+    assert sc.geometry.edge_distance == pytest.approx(0.01, rel=1e-15)
+    centre = zs.Scene("steel", "steel", radius="5 mm", thickness="2 mm", v0="1 m/s",
+                      plate_size=("60 mm", "40 mm"), support="simply-supported")
+    assert centre.plate_options()["impact"] == (0.5, 0.5)
+
+
+@pytest.mark.parametrize("kw,msg", [
+    (dict(plate_radius="50 mm", support="pinned"), r"unknown support 'pinned'; allowed: clamped"),
+    (dict(plate_size=("50 mm", "50 mm"), support="clamped"),
+     r"support 'clamped' is not modelled for a rectangle"),
+    (dict(plate_size=("50 mm", "40 mm"), impact_at=("60 mm", "20 mm"),
+          support="simply-supported"), r"impact point .* is not inside"),
+    (dict(plate_size=("50 mm", "40 mm"), impact_at=("0 mm", "20 mm"),
+          support="simply-supported"), r"impact point .* is not inside"),
+    (dict(plate_size=("50 mm", "40 mm"), impact_at=("-1 mm", "20 mm")), r"not inside"),
+    (dict(plate_radius="2 mm"), r"plate_radius must exceed the sphere radius"),
+    (dict(plate_size=("4 mm", "50 mm")), r"must exceed the sphere's diameter"),
+    (dict(plate_radius="50"), r"plate_radius 50: give a unit"),
+    (dict(plate_size=("50", "50 mm")), r"plate_size\[0\] 50: give a unit"),
+    (dict(plate_size=("50 mm", "50 mm"), impact_at=("25", "25 mm")), r"give a unit"),
+    (dict(plate_radius="50 mm", plate_size=("50 mm", "50 mm")), r"not both"),
+    (dict(plate_radius="50 mm", impact_at=("1 mm", "1 mm")), r"struck at its centre"),
+    (dict(support="clamped"), r"support needs a bounded plate"),
+    (dict(plate_radius="50 mm", support="clamped", plate_loss=1.0), r"0 <= loss < 1"),
+    (dict(plate_radius="50 mm", support="clamped", plate_loss=-0.1), r"0 <= loss < 1"),
+    (dict(plate_radius="50 mm", support="clamped", plate_loss=math.nan), r"0 <= loss < 1"),
+])
+def test_scene_refuses(kw, msg):
+    with pytest.raises(ValueError, match=msg):
+        zs.Scene("steel", "glass", radius="2.5 mm", thickness="1 mm", v0="1 m/s", **kw)
+
+
+@pytest.mark.parametrize("options,msg", [
+    (dict(beta=1e-3, support="clamped", n_modes=10**15), r"n_modes must be an integer .*"
+                                                          r"what this machine's memory holds"),
+    (dict(beta=1e-3, support="clamped", n_modes=0), r"n_modes"),
+    (dict(beta=1e-3, support="clamped", n_modes=2.5), r"n_modes"),
+    (dict(beta=1e-3, support="clamped", loss=1.0), r"loss"),
+    (dict(beta=1e-3, support="free"), r"unknown support 'free'"),
+    (dict(beta=-1.0, support="clamped"), r"beta"),
+    (dict(support="clamped"), r"needs, besides lambda, the options beta"),
+    (dict(beta=1e-3, support="simply-supported", shape="rectangle", impact=(1.2, 0.5)),
+     r"impact x/a"),
+])
+def test_model_refuses(options, msg):
+    with pytest.raises(ValueError, match=msg):
+        zs.summary(1.0, model="finite-plate", **options)
+
+
+def test_model_needs_its_options_and_is_never_selected():
+    from zener_sym.models import get_model
+
+    m = get_model("finite-plate")
+    assert not m.in_envelopes and not m.valid([0.1, 1.0]).any()
+    assert zs.select_model(1.0, "e", 1e-3).model != "finite-plate"
+
+
+def test_zener_result_has_one_contact():
+    sc = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s")
+    r = sc.result()
+    (c,) = r.contacts
+    assert c.start_s == 0.0 and c.end_s == r.contact_duration_s
+    assert c.max_force_N == r.max_force_N
+    # the ball's momentum change m v0 (1 + e): in, and out at e v0
+    assert c.impulse_N_s == pytest.approx(sc.m1 * sc.v0 * (1.0 + r.e), rel=1e-12)
+    assert c.speed_after_m_s == pytest.approx(r.e * sc.v0, rel=1e-15)
+
+
+def _run(capsys, argv):
+    rc = cli.main(argv)
+    out = capsys.readouterr()
+    return rc, out.out, out.err
+
+
+def test_cli_json_contract(capsys):
+    rc, out, err = _run(capsys, SCENE + ["--json"])
+    assert rc == 0
+    d = json.loads(out)
+    assert {"model", "lam", "e", "contacts"} <= set(d)
+    assert d["lam"] == pytest.approx(zs.Scene("steel", "glass", 2.5e-3, 1e-3, 1.0).lam,
+                                     rel=1e-15)
+    (c,) = d["contacts"]
+    assert set(c) == {"start_s", "end_s", "max_force_N", "impulse_N_s", "speed_after_m_s"}
+    assert c["speed_after_m_s"] == pytest.approx(d["e"] * 1.0, rel=1e-15)
+
+
+@pytest.mark.parametrize("extra,msg", [
+    (["--plate-radius", "50mm", "--support", "pinned"], "unknown support 'pinned'"),
+    (["--plate-size", "50mm,40mm", "--impact-at", "60mm,20mm", "--support",
+      "simply-supported"], "not inside"),
+    (["--plate-radius", "2mm", "--support", "clamped"], "must exceed the sphere radius"),
+    (["--plate-radius", "50", "--support", "clamped"], "give a unit"),
+    (["--plate-size", "50mm,40", "--support", "simply-supported"], "give a unit"),
+    (["--plate-size", "50mm", "--support", "simply-supported"], "two lengths"),
+    (["--plate-radius", "50mm", "--support", "clamped", "--plate-loss", "1"], "0 <= loss < 1"),
+    (["--plate-radius", "50mm", "--plate-size", "50mm,50mm"], "not both"),
+    (["--support", "clamped"], "needs a bounded plate"),
+])
+def test_cli_refusals_are_one_line(capsys, extra, msg):
+    rc, out, err = _run(capsys, SCENE + extra + ["--json"])
+    assert rc == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and msg in err
+
+
+def test_cli_refuses_too_many_modes(capsys):
+    rc, out, err = _run(capsys, SCENE + ["--plate-radius", "50mm", "--support", "clamped",
+                                         "--model", "finite-plate", "--n-modes", "10**15"])
+    assert rc == 2 and len(err.strip().splitlines()) == 1 and "n-modes" in err
+    rc, out, err = _run(capsys, SCENE + ["--plate-radius", "50mm", "--support", "clamped",
+                                         "--model", "finite-plate", "--n-modes", "1000000000000"])
+    assert rc == 2 and len(err.strip().splitlines()) == 1 and "machine" in err

@@ -38,7 +38,7 @@ Options (``summary(lam, model="finite-plate", beta=..., support=..., ...)``):
 The summary: ``e`` is the ball's restitution after the last contact, ``impulse`` = 1 + e its
 whole impulse, ``xi`` = 1 - e^2 the energy left in the plate; ``tau_d``, ``tau_dc``, ``tau_dr``,
 ``eta`` and ``delta_m`` are those of the first contact (Zener's quantities, to compare), ``F_m``
-and ``int_F2`` those of every contact. :func:`impact` gives every contact.
+the largest force of every contact. :func:`impact` gives every contact.
 """
 from __future__ import annotations
 
@@ -54,7 +54,7 @@ import numpy as np
 from ..typing import FloatArray
 from .base import FieldValues, Model, register
 
-__all__ = ["FinitePlate", "impact", "check_plate_options", "max_modes", "SUPPORTS", "SHAPES",
+__all__ = ["FinitePlate", "impact", "summary_of", "check_plate_options", "max_modes", "SUPPORTS", "SHAPES",
            "DEFAULT_RTOL"]
 
 SUPPORTS = ("clamped", "simply-supported")
@@ -177,11 +177,31 @@ def impact(lam: float, **options: Any) -> Any:
 def _impact(lam: float, beta: float, support: str, shape: str, aspect: float,
             impact_fr: tuple[float, float], nu: float, rtol: float, loss: float,
             n_modes: int | None) -> Any:
-    # one solve serves the summary, the history and a scene's contacts
-    from ..plate import solver
+    # one solve serves the summary and a scene's contacts
+    from ..plate.modes import modal_plate
+    from ..plate.solver import choose_modes, solve
 
-    return solver.solve_scene(lam, beta, support=support, shape=shape, aspect=aspect,
-                              impact=impact_fr, nu=nu, rtol=rtol, loss=loss, n_modes=n_modes)
+    def make(n: int) -> Any:
+        return modal_plate(lam, beta, shape=shape, support=support, n_modes=n, aspect=aspect,
+                           impact=impact_fr, nu=nu)
+
+    if n_modes is None:
+        return choose_modes(make, rtol=rtol, loss=loss)[1]
+    return solve(make(n_modes), rtol=rtol, loss=loss)
+
+
+def summary_of(res: Any) -> dict[str, float]:
+    """The model's summary fields from a :class:`zener_sym.plate.result.PlateImpact` (module
+    docstring): the first contact's duration, compression time and largest compression
+    (delta_m = F_peak^{2/3}: F = delta^{3/2} at every instant), every contact's largest force,
+    and the restitution after the last contact."""
+    first = res.contacts[0]
+    tau_d, tau_dc = first.end - first.start, first.peak_time - first.start
+    e = float(res.e)
+    return {"delta_m": first.peak_force ** (2.0 / 3.0), "tau_dc": tau_dc, "tau_d": tau_d,
+            "tau_dr": tau_d - tau_dc, "eta": (tau_d - tau_dc) / tau_dc, "e": e,
+            "F_m": max(c.peak_force for c in res.contacts), "impulse": 1.0 + e,
+            "xi": 1.0 - e * e}
 
 
 class FinitePlate(Model):
@@ -192,8 +212,8 @@ class FinitePlate(Model):
                    "supported, or simply supported rectangle): modes plus the static "
                    "correction, every contact to the proved end (options beta, support, ...)")
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m",
-                      "impulse", "int_F2", "xi")
-    history_fields = ("delta", "velocity", "force", "impulse")
+                      "impulse", "xi")
+    history_fields = ()
     options = ("beta", "support", "shape", "aspect", "impact", "nu", "rtol", "loss", "n_modes")
     in_envelopes = False  # select_model never picks it: the scene's criterion does
 
@@ -205,18 +225,9 @@ class FinitePlate(Model):
     def _summary(self, lam: FloatArray, **options: Any) -> FieldValues:
         out = {f: np.empty(lam.shape) for f in self.summary_fields if f != "lam"}
         for i, x in np.ndenumerate(lam):
-            s = impact(float(x), **options).summary()
+            s = summary_of(impact(float(x), **options))
             for f in out:
                 out[f][i] = s[f]
-        return out
-
-    def _history(self, lam: FloatArray, tau: FloatArray, **options: Any) -> FieldValues:
-        out = {f: np.empty(tau.shape) for f in self.history_fields}
-        for x in np.unique(lam):
-            mask = lam == x
-            h = impact(float(x), **options).history(tau[mask])
-            for f in out:
-                out[f][mask] = h[f]
         return out
 
 

@@ -17,7 +17,8 @@ The estimate at a point is conservative by construction:
    upper beta neighbour; below the smallest lambda of the grid, that lambda's column; below the
    smallest beta, the smallest beta's row (the large-plate limit is Zener's);
 3. Zener is said to hold when the estimate times :data:`SAFETY` is <= rtol, and only inside the
-   grid (lambda above it, or beta above it, is no claim: the finite plate is solved).
+   grid (lambda above it, or beta above it, is no claim: the finite plate is solved) and for an
+   rtol the table resolves (:data:`RESOLUTION` times the accuracy of its solver, times SAFETY).
 
 tests/test_plate_criterion.py runs the ``finite-plate`` model between the grid points and checks
 that the criterion never says that Zener holds where the two differ by more than rtol.
@@ -37,10 +38,14 @@ from dataclasses import dataclass
 from importlib import resources
 from typing import Any
 
-__all__ = ["Verdict", "zener_error", "judge", "load", "SAFETY", "QUANTITIES", "KNOWN", "TABLE"]
+__all__ = ["Verdict", "zener_error", "judge", "load", "SAFETY", "RESOLUTION", "QUANTITIES", "KNOWN",
+           "TABLE"]
 
 #: Zener holds when SAFETY times the estimated difference is <= rtol.
 SAFETY = 2.0
+#: The smallest difference the table resolves, in units of its solver's rtol: the criterion
+#: claims nothing for an rtol below SAFETY x RESOLUTION x solver_rtol.
+RESOLUTION = 10.0
 #: The quantities the table holds (scene result fields by their summary names; xi absolute).
 QUANTITIES = ("tau_d", "F_m", "delta_m", "e", "xi", "impulse")
 #: The committed table, in the package's data folder.
@@ -176,10 +181,14 @@ def judge(lam: float, beta: float, supports: tuple[str, ...], quantity: str = "a
     """
     table = load() if table is None else table
     err = max(zener_error(lam, beta, s, quantity, table) for s in supports)
-    holds = SAFETY * err <= rtol
+    finest = SAFETY * RESOLUTION * float(table["solver_rtol"])
+    holds = SAFETY * err <= rtol and rtol >= finest
     what = " or ".join(supports)
     eq = "" if shape == "circle" else " (the rectangle as the circle through its nearest edge)"
-    if math.isinf(err):
+    if rtol < finest:
+        why = (f"rtol {rtol:g} is finer than the finite-plate criterion resolves ({finest:g}): "
+               "no claim that Zener's infinite plate holds")
+    elif math.isinf(err):
         why = (f"lambda = {lam:.4g}, beta = {beta:.3g} lie beyond the criterion's table "
                f"(lambda <= {table['lam'][-1]:g}, beta <= {table['beta'][-1]:g}){eq}: no claim "
                "that Zener's infinite plate holds")

@@ -1,0 +1,228 @@
+"""The sphere on a modal plate, solved with every contact to the proved end (issue 37, section 2).
+
+The equations are those of :mod:`.modal` (Zener's scales), with an optional modal loss factor eta:
+
+    x'' = -F,   y_n'' + eta omega_n y_n' + omega_n^2 y_n = c_n F,   delta = x - sum y_n - C_res F,
+    F = max(delta, 0)^{3/2},   x(0) = 0, x'(0) = 1, y_n(0) = y_n'(0) = 0.
+
+Contacts are stepped on a uniform grid with the force piecewise linear and solved implicitly at
+each node (:mod:`.stepping`); the modes are propagated exactly (:mod:`.kernels`), so no mode limits
+the step. Between contacts the motion is known in closed form and the next contact, or the proved
+end, is found by :mod:`.flight`. The whole impact is run at steps 4h, 2h and h; Richardson's
+extrapolation (order 2) of the last two pairs gives two estimates whose difference is the
+reported error, and h is halved until that error is below rtol |e|.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..typing import FloatArray
+from .flight import Flight, end_bound, next_contact
+from .kernels import Kernel, Rates
+from .modal import ModalPlate
+from .result import CONTACT_FIELDS, PlateContact, PlateImpact
+from .stepping import ContactRun, end_of_contact, step_contact
+
+__all__ = ["solve", "choose_modes", "check_plate", "RTOL_MIN", "RTOL_MAX"]
+
+RTOL_MIN = 1e-12
+RTOL_MAX = 1e-2
+#: A contact is stepped with at least this many nodes (shorter ones are re-run on a finer grid).
+N_MIN = 16
+#: Absolute floor of the error target on e, relative to rtol (e can be nearly 0).
+E_FLOOR = 1e-3
+
+
+def check_plate(plate: ModalPlate) -> tuple[FloatArray, FloatArray, float]:
+    """(omega, c, C_res) of a valid ModalPlate; ValueError saying what is wrong otherwise."""
+    if not isinstance(plate, ModalPlate):
+        raise ValueError(f"plate must be a zener_sym.plate.ModalPlate, got {type(plate).__name__}")
+    omega = np.asarray(plate.omega, dtype=float)
+    c = np.asarray(plate.c, dtype=float)
+    if omega.ndim != 1 or c.shape != omega.shape or omega.size == 0:
+        raise ValueError(f"plate.omega and plate.c must be 1-D arrays of the same nonzero length, "
+                         f"got shapes {omega.shape} and {c.shape}")
+    if not (np.all(np.isfinite(omega)) and np.all(omega > 0.0)):
+        raise ValueError("plate.omega must be finite and > 0 (the modes' frequencies omega_n t_0)")
+    if not (np.all(np.isfinite(c)) and np.all(c >= 0.0)):
+        raise ValueError("plate.c must be finite and >= 0 (the modes' participations)")
+    static = plate.static
+    if not (isinstance(static, (int, float, np.floating)) and math.isfinite(static)
+            and static > 0.0):
+        raise ValueError(f"plate.static (the static compliance C_s m / t_0^2) must be a finite "
+                         f"number > 0, got {static!r}")
+    keep = c > 0.0       # a mode the ball cannot excite never moves
+    if not np.any(keep):
+        raise ValueError("plate.c is 0 for every mode: the impact point is a node of them all")
+    res = plate.residual
+    if res < -1e-9 * static:
+        raise ValueError(f"plate.static = {static!r} is below the modes' own static compliance "
+                         f"sum c_n / omega_n^2 = {static - res!r}: C_res must be >= 0")
+    return omega[keep], c[keep], max(res, 0.0)
+
+
+def _check_options(rtol: float, loss: float) -> None:
+    for name, val in (("rtol", rtol), ("loss", loss)):
+        if isinstance(val, bool) or not isinstance(val, (int, float, np.floating)) \
+                or not math.isfinite(val):
+            raise ValueError(f"{name} must be a finite real number, got {val!r}")
+    if not RTOL_MIN <= rtol <= RTOL_MAX:
+        raise ValueError(f"rtol must be in [{RTOL_MIN:g}, {RTOL_MAX:g}], got {rtol!r}")
+    if not 0.0 <= loss < 1.0:
+        raise ValueError(f"loss (the modal loss factor eta) must be in [0, 1), got {loss!r}")
+
+
+@dataclass
+class _Run:
+    """One whole impact at one step: its contacts and the proved end."""
+
+    contacts: list[ContactRun]
+    end_time: float
+
+
+def _contact(r: Rates, c_res: float, h: float, kernels: dict[float, Kernel], t_s: float,
+             x_s: float, v_s: float, B_s: FloatArray, max_steps: int) -> ContactRun:
+    """One contact at step h, re-run on a finer grid when it has fewer than N_MIN nodes."""
+    for _ in range(40):
+        if h not in kernels:
+            kernels[h] = Kernel(r, h, 256)
+        F, k = step_contact(kernels[h], c_res, x_s, v_s, B_s, max_steps)
+        if k >= N_MIN:
+            break
+        h = h / 2.0 ** math.ceil(math.log2(N_MIN / max(k - 1, 0.5)))
+    else:
+        raise RuntimeError(f"a contact at tau = {t_s:.6g} does not resolve (a graze?)")
+    return end_of_contact(kernels[h], c_res, t_s, x_s, v_s, B_s, F)
+
+
+def _run(r: Rates, c_res: float, h: float, max_contacts: int, max_steps: int) -> _Run:
+    kernels: dict[float, Kernel] = {}
+    fl = Flight(0.0, 0.0, 1.0, np.zeros(len(r.s), dtype=complex))
+    t_s: float | None = 0.0
+    runs: list[ContactRun] = []
+    while t_s is not None:
+        if len(runs) >= max_contacts:
+            raise RuntimeError(f"more than max_contacts = {max_contacts} contacts")
+        x_s, B_s = fl.advanced(r, t_s)
+        run = _contact(r, c_res, h, kernels, t_s, x_s, fl.v, B_s, max_steps)
+        runs.append(run)
+        fl = Flight(run.t_e, run.x_e, run.v_e, run.B_e)
+        t_s = next_contact(r, fl, 1.0)
+    end = fl.t_r + max(0.0, (fl.x_r + end_bound(r, fl.B)) / -fl.v) if fl.v < 0 else fl.t_r
+    return _Run(runs, end)
+
+
+def _fields(r: Rates, run: _Run) -> list[dict[str, float]]:
+    rows = []
+    for cr in run.contacts:
+        tp, fp = cr.peak
+        rows.append(dict(start=cr.t_s, end=cr.t_e, peak_time=tp, peak_force=fp,
+                         impulse=cr.impulse, speed_after=-cr.v_e,
+                         plate_energy=2.0 * r.energy(cr.B_e)))
+    return rows
+
+
+def _richardson(coarse: list[dict[str, float]], fine: list[dict[str, float]]) -> list[dict[str, float]]:
+    return [{f: (4.0 * b[f] - a[f]) / 3.0 for f in CONTACT_FIELDS} for a, b in zip(coarse, fine)]
+
+
+def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float | None = None,
+          max_contacts: int = 1000, max_steps: int = 2_000_000,
+          max_halvings: int = 12) -> PlateImpact:
+    """The sphere's impact on a modal plate, with every contact to the proved end.
+
+    Parameters
+    ----------
+    plate : ModalPlate
+        The plate's modes seen from the impact point, in Zener's scales (:mod:`.modal`).
+    rtol : float
+        Relative tolerance on e (with an absolute floor of 1e-3 rtol), in [1e-12, 1e-2].
+    loss : float
+        Modal loss factor eta in [0, 1) (each mode: y'' + eta omega y' + omega^2 y = c F);
+        0 (default) is the undamped plate.
+    h : float, optional
+        The first (coarsest) step tried; by default chosen from rtol.
+    max_contacts, max_steps : int
+        Refuse (RuntimeError) impacts with more contacts, or contacts with more steps.
+    max_halvings : int
+        How many times h may be halved to meet rtol (RuntimeError beyond).
+
+    Returns
+    -------
+    PlateImpact
+
+    Raises
+    ------
+    ValueError
+        For an invalid plate, rtol or loss.
+    """
+    _check_options(rtol, loss)
+    omega, c, c_res = check_plate(plate)
+    r = Rates(omega, c, float(loss))
+    h0 = float(h) if h is not None else min(0.4, 10.0 * rtol ** 0.4)
+    if not (math.isfinite(h0) and h0 > 0.0):
+        raise ValueError(f"h must be a finite step > 0, got {h!r}")
+    levels = [_run(r, c_res, h0 / 2.0**i, max_contacts, max_steps) for i in range(3)]
+    hk = h0 / 4.0
+    for _ in range(max_halvings + 1):
+        rows = [_fields(r, lv) for lv in levels]
+        if len({len(x) for x in rows}) == 1:
+            r1, r2 = _richardson(rows[0], rows[1]), _richardson(rows[1], rows[2])
+            errs = [{f: abs(b[f] - a[f]) for f in CONTACT_FIELDS} for a, b in zip(r1, r2)]
+            e = r2[-1]["speed_after"]
+            if errs[-1]["speed_after"] <= rtol * max(abs(e), E_FLOOR):
+                return _result(r2, errs, levels[2], hk, len(omega), loss, rtol)
+        hk /= 2.0
+        levels = [levels[1], levels[2], _run(r, c_res, hk, max_contacts, max_steps)]
+    raise RuntimeError(f"e did not reach rtol = {rtol:g} by h = {hk:.3g} (contacts per level: "
+                       f"{[len(lv.contacts) for lv in levels]})")
+
+
+def _result(rows: list[dict[str, float]], errs: list[dict[str, float]], run: _Run, h: float,
+            n: int, loss: float, rtol: float) -> PlateImpact:
+    contacts = tuple(PlateContact(**row) for row in rows)
+    return PlateImpact(contacts=contacts, e=rows[-1]["speed_after"],
+                       plate_energy=rows[-1]["plate_energy"], error=errs[-1]["speed_after"],
+                       errors=tuple(errs), end_time=run.end_time, h=h, n_modes=n,
+                       loss=float(loss), rtol=rtol)
+
+
+def choose_modes(make: Callable[[int], ModalPlate], *, rtol: float = 1e-6, loss: float = 0.0,
+                 n_start: int = 8, n_max: int = 4096) -> tuple[ModalPlate, PlateImpact]:
+    """The plate with enough modes for rtol in e, and its impact.
+
+    Doubles the mode count from ``n_start`` until e changes by less than rtol |e| (the modes left
+    out respond quasi-statically and are in C_res), and returns the larger model and its result.
+
+    Parameters
+    ----------
+    make : callable
+        n -> ModalPlate with the n lowest modes (e.g. ``functools.partial(modal_plate, lam,
+        beta, shape=..., support=...)`` with ``n_modes`` as the one left free).
+    rtol, loss : float
+        As for :func:`solve`.
+    n_start, n_max : int
+        The first mode count and the largest allowed (RuntimeError beyond).
+
+    Returns
+    -------
+    (ModalPlate, PlateImpact)
+    """
+    _check_options(rtol, loss)
+    n = int(n_start)
+    if n < 1 or n_max < n:
+        raise ValueError(f"need 1 <= n_start <= n_max, got {n_start!r}, {n_max!r}")
+    plate = make(n)
+    res = solve(plate, rtol=rtol / 4.0, loss=loss)
+    while 2 * n <= n_max:
+        plate2 = make(2 * n)
+        res2 = solve(plate2, rtol=rtol / 4.0, loss=loss)
+        if len(res2.contacts) == len(res.contacts) and \
+                abs(res2.e - res.e) <= 0.5 * rtol * max(abs(res2.e), E_FLOOR):
+            return plate2, res2
+        n, plate, res = 2 * n, plate2, res2
+    raise RuntimeError(f"e did not converge in the mode count up to n_max = {n_max}")

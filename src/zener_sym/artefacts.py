@@ -398,6 +398,24 @@ def _plate_criterion_same(rel: str, old: str, new: str) -> list[str]:
     return pcb.compare(json.loads(old), json.loads(new))
 
 
+def _finite_plate_fresh(root: Path | None) -> Texts:
+    from .report import finite_plate
+
+    return {finite_plate.FORCE_CSV: finite_plate.force_csv()}
+
+
+def _finite_plate_same(rel: str, old: str, new: str) -> list[str]:
+    from .report import finite_plate
+
+    return finite_plate.compare_csv(rel, old, new)
+
+
+def _finite_plate_write(root: Path | None, texts: Texts) -> list[Path]:
+    from .report import finite_plate
+
+    return finite_plate.write_charts(root, texts[finite_plate.FORCE_CSV])
+
+
 def _lammps_docs() -> ModuleType:
     from .bench import lammps_docs
 
@@ -454,6 +472,11 @@ ARTEFACTS: tuple[Artefact, ...] = (
              "grid: the criterion Scene.result chooses by",
              ("src/zener_sym/data/plate_criterion.json",), _plate_criterion_fresh,
              _plate_criterion_same, needs_checkout=False),
+    Artefact("finite-plate-figures", "the finite plate's force history beside Zener's (data "
+             "and chart) and the regime map from the criterion table (docs/finite_plates.md)",
+             ("docs/data/finite_plate_force.csv", "docs/figures/finite_plate_force.png",
+              "docs/figures/finite_plate_regime.png"), _finite_plate_fresh, _finite_plate_same,
+             write=_finite_plate_write),
     Artefact("bench-reference", "the benchmark's mpmath reference",
              ("src/zener_sym/data/bench_reference.json",), _bench_reference_fresh,
              _bench_reference_same, needs_checkout=False, alias="bench --build-reference"),

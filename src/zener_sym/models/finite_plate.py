@@ -51,10 +51,15 @@ from typing import Any
 
 import numpy as np
 
+from ..plate.kernels import Rates
+from ..plate.modal import ModalPlate
+from ..plate.modes import modal_plate
+from ..plate.result import PlateImpact
+from ..plate.solver import RTOL_MAX, RTOL_MIN, _run, check_plate, choose_modes, solve
 from ..typing import FloatArray
 from .base import FieldValues, Model, register
 
-__all__ = ["FinitePlate", "impact", "summary_of", "check_plate_options", "max_modes", "SUPPORTS", "SHAPES",
+__all__ = ["FinitePlate", "impact", "summary_of", "history_of", "check_plate_options", "max_modes", "SUPPORTS", "SHAPES",
            "DEFAULT_RTOL"]
 
 SUPPORTS = ("clamped", "simply-supported")
@@ -131,7 +136,8 @@ def check_plate_options(options: Mapping[str, Any]) -> dict[str, Any]:
         raise ValueError("model 'finite-plate': the circle is struck at its centre; impact is "
                          "for the rectangle")
     nu = _real(options.get("nu", 0.3), "nu", -1.0, 0.5)
-    rtol = _real(options.get("rtol", DEFAULT_RTOL), "rtol", 0.0, 1.0)
+    rtol = _real(options.get("rtol", DEFAULT_RTOL), "rtol", RTOL_MIN, RTOL_MAX, lo_open=False,
+                 hi_open=False)
     loss = _real(options.get("loss", 0.0), "loss", 0.0, 1.0, lo_open=False)
     n_modes = options.get("n_modes")
     if n_modes is not None:
@@ -146,7 +152,14 @@ def check_plate_options(options: Mapping[str, Any]) -> dict[str, Any]:
             "impact": impact_fr, "nu": nu, "rtol": rtol, "loss": loss, "n_modes": n_modes}
 
 
-def impact(lam: float, **options: Any) -> Any:
+def _key(lam: float, options: Mapping[str, Any]) -> tuple[Any, ...]:
+    lam_v = _real(lam, "lambda", 0.0, math.inf, lo_open=False)
+    o = check_plate_options(options)
+    return (lam_v, o["beta"], o["support"], o["shape"], o["aspect"], o["impact"], o["nu"],
+            o["rtol"], o["loss"], o["n_modes"])
+
+
+def impact(lam: float, **options: Any) -> PlateImpact:
     """The finite plate's impact at one lambda, with every contact
     (:class:`zener_sym.plate.solver.PlateImpact`).
 
@@ -167,27 +180,63 @@ def impact(lam: float, **options: Any) -> Any:
     ValueError
         For a bad lambda or option (:func:`check_plate_options`).
     """
-    lam_v = _real(lam, "lambda", 0.0, math.inf, lo_open=False)
-    o = check_plate_options(options)
-    return _impact(lam_v, o["beta"], o["support"], o["shape"], o["aspect"], o["impact"],
-                   o["nu"], o["rtol"], o["loss"], o["n_modes"])
+    return _impact(*_key(lam, options))
 
 
 @functools.lru_cache(maxsize=256)
-def _impact(lam: float, beta: float, support: str, shape: str, aspect: float,
+def _solved(lam: float, beta: float, support: str, shape: str, aspect: float,
             impact_fr: tuple[float, float], nu: float, rtol: float, loss: float,
-            n_modes: int | None) -> Any:
-    # one solve serves the summary and a scene's contacts
-    from ..plate.modes import modal_plate
-    from ..plate.solver import choose_modes, solve
-
-    def make(n: int) -> Any:
+            n_modes: int | None) -> tuple[ModalPlate, PlateImpact]:
+    # one solve serves the summary, the history and a scene's contacts
+    def make(n: int) -> ModalPlate:
         return modal_plate(lam, beta, shape=shape, support=support, n_modes=n, aspect=aspect,
                            impact=impact_fr, nu=nu)
 
     if n_modes is None:
-        return choose_modes(make, rtol=rtol, loss=loss)[1]
-    return solve(make(n_modes), rtol=rtol, loss=loss)
+        return choose_modes(make, rtol=rtol, loss=loss)
+    plate = make(n_modes)
+    return plate, solve(plate, rtol=rtol, loss=loss)
+
+
+def _impact(*args: Any) -> PlateImpact:
+    return _solved(*args)[1]
+
+
+@functools.lru_cache(maxsize=16)
+def _force_nodes(*args: Any) -> tuple[FloatArray, FloatArray]:
+    """The force on the solver's finest grid: node times and forces, every contact (0 between
+    contacts), piecewise linear in between (the solver's own force representation)."""
+    plate, res = _solved(*args)
+    omega, c, c_res = check_plate(plate)
+    # the finest of the solver's runs (its result is their Richardson extrapolation)
+    run = _run(Rates(omega, c, res.loss), c_res, res.h, len(res.contacts) + 1, 2_000_000)
+    t: list[float] = []
+    f: list[float] = []
+    for cr in run.contacts:
+        nodes = cr.t_s + cr.h * np.arange(len(cr.F))
+        t += [*nodes, cr.t_e]
+        f += [*cr.F, 0.0]
+    return np.array(t), np.array(f)
+
+
+def history_of(t_nodes: FloatArray, f_nodes: FloatArray, tau: FloatArray) -> FieldValues:
+    """Force, impulse, velocity and compression at ``tau`` from a piecewise-linear force.
+
+    The force is linear between the nodes (0 before the first, after the last and between
+    contacts); the impulse I is its exact integral and the ball's velocity 1 - I (in units of
+    v_0); the compression is F^{2/3} (Hertz: F = delta^{3/2} in contact, 0 outside).
+    """
+    tau = np.asarray(tau, float)
+    force = np.interp(tau, t_nodes, f_nodes, left=0.0, right=0.0)
+    steps = np.diff(t_nodes)
+    cum = np.concatenate(([0.0], np.cumsum(0.5 * (f_nodes[1:] + f_nodes[:-1]) * steps)))
+    k = np.clip(np.searchsorted(t_nodes, tau, side="right") - 1, 0, len(t_nodes) - 1)
+    u = np.clip(tau - t_nodes[k], 0.0, None)
+    inside = (tau >= t_nodes[0]) & (tau < t_nodes[-1])
+    impulse = np.where(inside, cum[k] + 0.5 * (f_nodes[k] + force) * u,
+                       np.where(tau >= t_nodes[-1], cum[-1], 0.0))
+    return {"force": force, "impulse": impulse, "velocity": 1.0 - impulse,
+            "delta": np.power(force, 2.0 / 3.0)}
 
 
 def summary_of(res: Any) -> dict[str, float]:
@@ -213,7 +262,7 @@ class FinitePlate(Model):
                    "correction, every contact to the proved end (options beta, support, ...)")
     summary_fields = ("lam", "delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m",
                       "impulse", "xi")
-    history_fields = ()
+    history_fields = ("delta", "velocity", "force", "impulse")
     options = ("beta", "support", "shape", "aspect", "impact", "nu", "rtol", "loss", "n_modes")
     in_envelopes = False  # select_model never picks it: the scene's criterion does
 
@@ -228,6 +277,15 @@ class FinitePlate(Model):
             s = summary_of(impact(float(x), **options))
             for f in out:
                 out[f][i] = s[f]
+        return out
+
+    def _history(self, lam: FloatArray, tau: FloatArray, **options: Any) -> FieldValues:
+        out = {f: np.empty(tau.shape) for f in self.history_fields}
+        for x in np.unique(lam):
+            mask = lam == x
+            h = history_of(*_force_nodes(*_key(float(x), options)), tau[mask])
+            for f in out:
+                out[f][mask] = h[f]
         return out
 
 

@@ -27,7 +27,7 @@ if TYPE_CHECKING:
     from ..scene.scene import Scene
 
 __all__ = ["FORCE_CSV", "FORCE_CHART", "REGIME_CHART", "CASES", "case_scene", "force_csv",
-           "write_charts", "section"]
+           "compare_csv", "write_charts", "section", "COMPARE_RTOL"]
 
 FORCE_CSV = "docs/data/finite_plate_force.csv"
 FORCE_CHART = "docs/figures/finite_plate_force.png"
@@ -86,6 +86,24 @@ def force_csv() -> str:
 def _read_csv(text: str) -> tuple[list[str], np.ndarray]:
     lines = text.strip().splitlines()
     return lines[0].split(","), np.array([[float(x) for x in ln.split(",")] for ln in lines[1:]])
+
+
+#: A rebuilt force may move by this much (relative to each column's peak) before the committed
+#: data is stale: the solver's own accuracy there (rtol 1e-4 in e) with a margin.
+COMPARE_RTOL = 1e-3
+
+
+def compare_csv(rel: str, old: str, new: str) -> list[str]:
+    """Why the committed force data is stale against a rebuild (empty: fresh)."""
+    try:
+        (c_old, a), (c_new, b) = _read_csv(old), _read_csv(new)
+    except ValueError as exc:
+        return [f"{rel} does not parse: {exc}"]
+    if c_old != c_new or a.shape != b.shape:
+        return [f"{rel}: columns or rows differ from a rebuild ({a.shape} against {b.shape})"]
+    scale = np.max(np.abs(b), axis=0)
+    bad = np.nonzero(np.any(np.abs(a - b) > COMPARE_RTOL * scale, axis=0))[0]
+    return [f"{rel}: column {c_new[i]} moved beyond {COMPARE_RTOL:g} of its peak" for i in bad]
 
 
 def _force_chart(csv_text: str, path: Path) -> None:

@@ -729,8 +729,9 @@ class SceneResult:
         Returns
         -------
         dict of str to numpy.ndarray
-            ``t_s``, ``force_N``, ``deflection_m`` (plate centre), ``velocity_m_s`` (sphere,
-            positive towards the plate) and ``compression_m``, each of the shape of ``t``.
+            ``t_s``, ``force_N``, ``deflection_m`` (plate centre; not for ``finite-plate``),
+            ``velocity_m_s`` (sphere, positive towards the plate) and ``compression_m``, each of
+            the shape of ``t``.
 
         Raises
         ------
@@ -756,13 +757,17 @@ class SceneResult:
         name = model or self.model
         h = _history(self.lam, ts / sc.T, model=name,
                      **(self.options if name == self.model else {}))
-        return {
+        out = {
             "t_s": ts,
             "force_N": sc.force_scale * h.force,
             "deflection_m": sc.alpha * sc.m_star * sc.v0 * h.impulse,
             "velocity_m_s": sc.v0 * (1.0 - sc.m_star / sc.m1 * h.impulse),
             "compression_m": sc.length_scale * h.delta,
         }
+        if name == "finite-plate":
+            # w = alpha I is the infinite plate's; the bounded plate rings (not reported)
+            del out["deflection_m"]
+        return out
 
     def force(self, t: RealArrayLike) -> FloatArray:
         """Contact force F(t) [N] (Eq. 45) at times ``t`` [s], with the result's model.
@@ -808,7 +813,11 @@ class SceneResult:
         >>> round(w_end / r.final_deflection_m, 9)
         1.0
         """
-        return self.history(t)["deflection_m"]
+        h = self.history(t)
+        if "deflection_m" not in h:
+            raise ValueError("the finite plate's deflection history is not reported (its "
+                             "modes ring between contacts); force, velocity and compression are")
+        return h["deflection_m"]
 
     def velocity(self, t: RealArrayLike) -> FloatArray:
         """Sphere velocity V(t) [m/s] (Eq. 64), positive towards the plate, at ``t`` [s].

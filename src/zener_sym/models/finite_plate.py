@@ -192,10 +192,15 @@ def _solved(lam: float, beta: float, support: str, shape: str, aspect: float,
         return modal_plate(lam, beta, shape=shape, support=support, n_modes=n, aspect=aspect,
                            impact=impact_fr, nu=nu)
 
-    if n_modes is None:
-        return choose_modes(make, rtol=rtol, loss=loss)
-    plate = make(n_modes)
-    return plate, solve(plate, rtol=rtol, loss=loss)
+    try:
+        if n_modes is None:
+            return choose_modes(make, rtol=rtol, loss=loss)
+        plate = make(n_modes)
+        return plate, solve(plate, rtol=rtol, loss=loss)
+    except RuntimeError as exc:  # the solver's limits (mode count, steps): say which input
+        raise ValueError(f"model 'finite-plate' cannot solve lambda = {lam:g}, beta = {beta:g} "
+                         f"({shape}, {support}) to rtol {rtol:g}: {exc}; a larger rtol or "
+                         "plate-size parameter beta (a smaller plate) is within reach") from None
 
 
 def _impact(*args: Any) -> PlateImpact:

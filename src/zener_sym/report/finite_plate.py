@@ -128,6 +128,22 @@ def _force_chart(csv_text: str, path: Path) -> None:
         plt.close(fig)
 
 
+def _case_points(support: str) -> list[tuple[str, float, float]]:
+    """The issue's scenes on the regime map of ``support``: (label, lambda, beta); the square
+    at its equivalent circle's beta (the criterion's reading of a rectangle)."""
+    out = []
+    for i, (name, *_rest) in enumerate(CASES):
+        sc = case_scene(i)
+        g = sc.geometry
+        assert g is not None and g.support is not None and sc.beta is not None
+        if g.support != support:
+            continue
+        beta = sc.beta * (g.L / g.edge_distance) ** 2
+        short = "square" if g.shape == "rectangle" else f"{g.size[0] * 1e3:.0f} mm"
+        out.append((short, sc.lam, beta))
+    return out
+
+
 def _regime_chart(path: Path) -> None:
     from matplotlib.colors import TwoSlopeNorm
 
@@ -156,6 +172,11 @@ def _regime_chart(path: Path) -> None:
             ax.contourf(lam, beta, several, levels=[0.5, 1.5], colors="none", hatches=["////"])
             ax.contour(lam, beta, several, levels=[0.5], colors="#444444", linewidths=0.8,
                        linestyles="--")
+            for name, lam_c, beta_c in _case_points(support):
+                ax.plot([lam_c], [beta_c], marker="o", markersize=4, color="black",
+                        markerfacecolor="white", linestyle="none")
+                ax.annotate(name, (lam_c, beta_c), xytext=(-4, 0), textcoords="offset points",
+                            ha="right", va="center", fontsize=6)
             ax.set_xscale("log")
             ax.set_yscale("log")
             ax.set_xlabel(label("lam"))

@@ -413,7 +413,9 @@ def _finite_plate_same(rel: str, old: str, new: str) -> list[str]:
 def _finite_plate_write(root: Path | None, texts: Texts) -> list[Path]:
     from .report import finite_plate
 
-    return finite_plate.write_charts(root, texts[finite_plate.FORCE_CSV])
+    paths = (locate(root, finite_plate.FORCE_CSV), locate(root, finite_plate.FORCE_CHART),
+             locate(root, finite_plate.REGIME_CHART))
+    return finite_plate.write_charts(paths, texts[finite_plate.FORCE_CSV])
 
 
 def _lammps_docs() -> ModuleType:

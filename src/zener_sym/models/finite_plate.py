@@ -59,7 +59,8 @@ from ..plate.solver import RTOL_MAX, RTOL_MIN, _run, check_plate, choose_modes, 
 from ..typing import FloatArray
 from .base import FieldValues, Model, register
 
-__all__ = ["FinitePlate", "impact", "summary_of", "history_of", "check_plate_options", "max_modes", "SUPPORTS", "SHAPES",
+__all__ = ["FinitePlate", "impact", "summary_of", "history_of", "check_plate_options",
+           "check_support", "check_loss", "max_modes", "SUPPORTS", "SHAPES",
            "DEFAULT_RTOL"]
 
 SUPPORTS = ("clamped", "simply-supported")
@@ -94,6 +95,67 @@ def _real(value: object, name: str, lo: float, hi: float, lo_open: bool = True,
     return float(value)  # type: ignore[arg-type]
 
 
+def check_support(support: object, shape: str = "circle") -> str:
+    """``support`` checked: one of :data:`SUPPORTS` (for a rectangle, ``"simply-supported"``).
+
+    Parameters
+    ----------
+    support : object
+        The support asked for.
+    shape : {"circle", "rectangle"}
+        The plate's shape.
+
+    Returns
+    -------
+    str
+        ``support`` itself; a ValueError naming the allowed ones for any other.
+
+    Examples
+    --------
+    >>> check_support("clamped")
+    'clamped'
+    >>> check_support("pinned")
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown support 'pinned'; allowed: clamped, simply-supported
+    """
+    allowed = SUPPORTS if shape == "circle" else ("simply-supported",)
+    if not isinstance(support, str) or support not in SUPPORTS:
+        raise ValueError(f"unknown support {support!r}; allowed: {', '.join(allowed)}")
+    if support not in allowed:
+        raise ValueError(f"support {support!r} is not modelled for a {shape}; allowed: "
+                         f"{', '.join(allowed)} (its Navier modes)")
+    return support
+
+
+def check_loss(loss: object) -> float:
+    """A modal loss factor checked: a finite real in [0, 1).
+
+    Parameters
+    ----------
+    loss : object
+        The loss factor asked for (0: undamped).
+
+    Returns
+    -------
+    float
+        ``loss`` as a float; a ValueError for anything else.
+
+    Examples
+    --------
+    >>> check_loss(0.01)
+    0.01
+    >>> check_loss(1.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: loss factor must be a finite real with 0 <= loss < 1, got 1.0
+    """
+    if isinstance(loss, bool) or not isinstance(loss, numbers.Real) \
+            or not math.isfinite(loss) or not 0.0 <= float(loss) < 1.0:
+        raise ValueError(f"loss factor must be a finite real with 0 <= loss < 1, got {loss!r}")
+    return float(loss)
+
+
 def check_plate_options(options: Mapping[str, Any]) -> dict[str, Any]:
     """The ``finite-plate`` options checked, with their defaults (module docstring).
 
@@ -122,11 +184,7 @@ def check_plate_options(options: Mapping[str, Any]) -> dict[str, Any]:
     if not isinstance(shape, str) or shape not in SHAPES:
         raise ValueError(f"model 'finite-plate': unknown shape {shape!r}; allowed: "
                          f"{', '.join(SHAPES)}")
-    support = options["support"]
-    allowed = SUPPORTS if shape == "circle" else ("simply-supported",)
-    if not isinstance(support, str) or support not in allowed:
-        raise ValueError(f"model 'finite-plate': unknown support {support!r} for the {shape}; "
-                         f"allowed: {', '.join(allowed)}")
+    support = check_support(options["support"], shape)
     aspect = _real(options.get("aspect", 1.0), "aspect", 0.0, math.inf)
     imp = options.get("impact", (0.5, 0.5))
     if isinstance(imp, str) or not isinstance(imp, (tuple, list, np.ndarray)) or len(imp) != 2:
@@ -138,7 +196,7 @@ def check_plate_options(options: Mapping[str, Any]) -> dict[str, Any]:
     nu = _real(options.get("nu", 0.3), "nu", -1.0, 0.5)
     rtol = _real(options.get("rtol", DEFAULT_RTOL), "rtol", RTOL_MIN, RTOL_MAX, lo_open=False,
                  hi_open=False)
-    loss = _real(options.get("loss", 0.0), "loss", 0.0, 1.0, lo_open=False)
+    loss = check_loss(options.get("loss", 0.0))
     n_modes = options.get("n_modes")
     if n_modes is not None:
         top = max_modes()

@@ -192,19 +192,29 @@ def _regime_chart(path: Path) -> None:
         plt.close(fig)
 
 
-def write_charts(root: Path | None, csv_text: str | None = None) -> list[Path]:
-    """Write the force data and both charts under ``root`` (module docstring); the files."""
-    from ..artefacts import locate
+def write_charts(paths: tuple[Path, Path, Path], csv_text: str | None = None) -> list[Path]:
+    """Write the force data and both charts (module docstring).
 
+    Parameters
+    ----------
+    paths : (Path, Path, Path)
+        Where the force data, the force chart and the regime map go.
+    csv_text : str, optional
+        The force data (default: computed).
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
     text = force_csv() if csv_text is None else csv_text
-    csv_path, force_path, regime_path = (locate(root, r) for r in
-                                         (FORCE_CSV, FORCE_CHART, REGIME_CHART))
-    for p in (csv_path, force_path, regime_path):
+    csv_path, force_path, regime_path = paths
+    for p in paths:
         p.parent.mkdir(parents=True, exist_ok=True)
     csv_path.write_text(text, encoding="utf-8")
     _force_chart(text, force_path)
     _regime_chart(regime_path)
-    return [csv_path, force_path, regime_path]
+    return list(paths)
 
 
 def _contact_rows(res: Any) -> list[list[str]]:

@@ -21,81 +21,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from ..models.finite_plate import SHAPES, SUPPORTS
+from ..models.finite_plate import SHAPES, SUPPORTS, check_loss, check_support
 from .units import si_value
 
 __all__ = ["SUPPORTS", "SHAPES", "PlateGeometry", "plate_geometry", "check_support",
            "check_loss"]
 
-
-
-def check_support(support: object, shape: str = "circle") -> str:
-    """``support`` checked: one of :data:`SUPPORTS` (for a rectangle, ``"simply-supported"``).
-
-    Parameters
-    ----------
-    support : object
-        The support asked for.
-    shape : {"circle", "rectangle"}
-        The plate's shape.
-
-    Returns
-    -------
-    str
-
-    Raises
-    ------
-    ValueError
-        For any other support, naming the allowed ones.
-
-    Examples
-    --------
-    >>> check_support("clamped")
-    'clamped'
-    >>> check_support("pinned")
-    Traceback (most recent call last):
-    ...
-    ValueError: unknown support 'pinned'; allowed: clamped, simply-supported
-    """
-    allowed = SUPPORTS if shape == "circle" else ("simply-supported",)
-    if not isinstance(support, str) or support not in SUPPORTS:
-        raise ValueError(f"unknown support {support!r}; allowed: {', '.join(allowed)}")
-    if support not in allowed:
-        raise ValueError(f"support {support!r} is not modelled for a {shape}; allowed: "
-                         f"{', '.join(allowed)} (its Navier modes)")
-    return support
-
-
-def check_loss(loss: object) -> float:
-    """A modal loss factor checked: a finite real in [0, 1).
-
-    Parameters
-    ----------
-    loss : object
-        The loss factor asked for (0: undamped).
-
-    Returns
-    -------
-    float
-
-    Raises
-    ------
-    ValueError
-        For anything else.
-
-    Examples
-    --------
-    >>> check_loss(0.01)
-    0.01
-    >>> check_loss(1.0)
-    Traceback (most recent call last):
-    ...
-    ValueError: loss factor must be a finite real with 0 <= loss < 1, got 1.0
-    """
-    if isinstance(loss, bool) or not isinstance(loss, numbers.Real) \
-            or not math.isfinite(loss) or not 0.0 <= float(loss) < 1.0:
-        raise ValueError(f"loss factor must be a finite real with 0 <= loss < 1, got {loss!r}")
-    return float(loss)
 
 
 @dataclass(frozen=True)

@@ -435,6 +435,15 @@ class Scene:
         Returns
         -------
         zener_sym.scene.plate_criterion.Verdict or None
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="2.5 mm", thickness="1 mm", v0="1 m/s",
+        ...               plate_radius="50 mm")
+        >>> v = sc.plate_verdict(rtol=1e-3)           # no support given: both are judged
+        >>> v.holds, v.supports
+        (False, ('clamped', 'simply-supported'))
         """
         from . import plate_criterion as crit
         from .plate_geometry import SUPPORTS
@@ -591,13 +600,15 @@ class Scene:
             contact_duration_s=get("tau_d", T), max_force_N=get("F_m", self.force_scale),
             max_compression_m=get("delta_m", L), e=get("e"), xi=get("xi"), eta=get("eta"),
             rebound_speed_m_s=get("e", self.v0),
-            final_deflection_m=get("impulse", self.alpha * self.m_star * self.v0),
+            # w = alpha I: the infinite plate's (the bounded plate rings on after contact)
+            final_deflection_m=(None if model == "finite-plate" else
+                                get("impulse", self.alpha * self.m_star * self.v0)),
             options=dict(options),
         )
         res.contacts = self._contacts(res)
         found = checks.static_checks(self)
         t_d, d_m, F_m = res.contact_duration_s, res.max_compression_m, res.max_force_N
-        if t_d is None or d_m is None or F_m is None or res.final_deflection_m is None:
+        if t_d is None or d_m is None or F_m is None or "impulse" not in have:
             found.append(("not-checked", f"model {model!r} does not give every quantity the "
                           "plate and yield checks need; they were skipped"))
         else:
@@ -804,6 +815,12 @@ class SceneResult:
         -------
         numpy.ndarray
             w [m], positive in the direction of the impact, of the shape of ``t``.
+
+        Raises
+        ------
+        ValueError
+            For a bad time, or the ``finite-plate`` model (its ringing plate's deflection is
+            not reported).
 
         Examples
         --------

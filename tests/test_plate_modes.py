@@ -242,3 +242,15 @@ def test_refusals(kw, match):
 def test_refusals_lam_beta(lam, beta):
     with pytest.raises(ValueError, match="lam|beta"):
         modal_plate(lam, beta, support="clamped", n_modes=5)
+
+
+def test_simply_supported_circle_near_nu_minus_one():
+    """As nu -> -1 the first root falls to 0 as x^4 = 96 (1 + nu)/(5 + nu) (the series of the
+    frequency equation, G = -(1 + nu) x + (5 + nu) x^5/96 + ...); the others stay put."""
+    nu = -0.999999
+    Omega, psi = dimensionless_modes(3, support="simply-supported", nu=nu)
+    assert Omega[0] == pytest.approx(math.sqrt(96 * (1 + nu) / (5 + nu)), rel=1e-5)
+    for i in (1, 2):
+        assert math.sqrt(Omega[i]) == pytest.approx(float(_mp_root("simply-supported", nu, i + 1)),
+                                                    rel=1e-13)
+    assert np.all(psi > 0)

@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 58a00b397042db45
+ * Inputs hash: 3b577d5da2ed9c7b
  * SymPy version: 1.14.0
  */
 #include <float.h>

@@ -449,10 +449,11 @@ _HAM1_FRESH, _HAM1_SAME, _HAM1_WRITE = _table(
 #: Every artefact, in the order ``regen`` builds them (an artefact after those it reads: the
 #: ham1 table hashes the generated kernels, the envelopes use the tables).
 ARTEFACTS: tuple[Artefact, ...] = (
-    Artefact("kernels", "the HAM formulas (Python) and the C99 kernels emitted from the derivation",
+    Artefact("kernels", "the HAM and plate formulas (Python) and the C99 kernels emitted from "
+             "the derivation",
              # codegen.BUILDERS' files (named here: importing codegen loads SymPy)
-             ("generated/ham0.py", "generated/ham1.py", "generated/c/zener_sym.h",
-              "generated/c/zener_sym.c"),
+             ("generated/ham0.py", "generated/ham1.py", "generated/plate.py",
+              "generated/c/zener_sym.h", "generated/c/zener_sym.c"),
              _kernels, alias="generate"),
     Artefact("formulas", "the derived equations in the paper's notation", ("FORMULAS.md",),
              _formulas, alias="generate, derive --markdown"),

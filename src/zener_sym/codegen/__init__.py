@@ -20,6 +20,8 @@ import sympy
 BUILDERS: list[tuple[str, str]] = [
     ("ham0.py", "zener_sym.codegen.ham:build_ham0"),
     ("ham1.py", "zener_sym.codegen.ham:build_ham1"),
+    # the bounded plate's mode formulas (derivation/plate.py, issue 37)
+    ("plate.py", "zener_sym.codegen.plate:build_plate"),
     # C99 (codegen/c): the API header and the kernels with the exact and ham1 tables
     ("c/zener_sym.h", "zener_sym.codegen.c:build_header"),
     ("c/zener_sym.c", "zener_sym.codegen.c:build_source"),

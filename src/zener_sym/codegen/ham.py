@@ -142,8 +142,10 @@ def _fill(text: str, indent: str) -> list[str]:
                          break_on_hyphens=False)
 
 
-def _docstring(args: Sequence[str], doc: _Doc) -> str:
-    """The numpydoc docstring (indented for a function body) of ``name(xp, *args)``."""
+def _docstring(args: Sequence[str], doc: _Doc,
+               arg_docs: dict[str, tuple[str, str]] = _ARG_DOCS) -> str:
+    """The numpydoc docstring (indented for a function body) of ``name(xp, *args)``, each
+    argument described by ``arg_docs`` (default: the HAM formulas')."""
     i, j = "    ", "        "
     lines = _fill(doc.summary, i)  # the first line follows the opening quotes
     lines = [lines[0].lstrip()] + lines[1:]
@@ -151,7 +153,7 @@ def _docstring(args: Sequence[str], doc: _Doc) -> str:
         lines += [""] + _fill(doc.extended, i)
     lines += ["", i + "Parameters", i + "----------"]
     for a in ("xp", *args):
-        kind, text = _ARG_DOCS[a]
+        kind, text = arg_docs[a]
         lines += [f"{i}{a} : {kind}"] + _fill(text, j)
     lines += ["", i + "Returns", i + "-------"]
     for out, kind, text in doc.returns:
@@ -161,13 +163,15 @@ def _docstring(args: Sequence[str], doc: _Doc) -> str:
 
 
 def _function(printer: Any, name: str, args: Sequence[str], doc: _Doc,
-              outputs: Sequence[Output], returns: str | None = None, prefix: str = "_x") -> str:
+              outputs: Sequence[Output], returns: str | None = None, prefix: str = "_x",
+              arg_docs: dict[str, tuple[str, str]] = _ARG_DOCS) -> str:
     """One printed formula function: ``def name(args)``, the docstring, the cse block of
     ``outputs`` [(name, expr)], and ``return returns`` (default: the outputs, a tuple when
-    several). Every free symbol of an output must be an argument or an earlier output."""
-    missing = [a for a in args if a not in _ARG_DOCS]
+    several). Every free symbol of an output must be an argument or an earlier output; every
+    argument is described in ``arg_docs`` (default: the HAM formulas')."""
+    missing = [a for a in args if a not in arg_docs]
     if missing:
-        raise ValueError(f"{name}: no parameter description for {missing} in _ARG_DOCS")
+        raise ValueError(f"{name}: no parameter description for {missing} in arg_docs")
     have = {str(a) for a in args}
     for out, ex in outputs:  # an output may use the arguments and the outputs before it
         extra = sorted(str(s) for s in ex.free_symbols if str(s) not in have)
@@ -176,7 +180,7 @@ def _function(printer: Any, name: str, args: Sequence[str], doc: _Doc,
         have.add(out)
     ret = returns or ", ".join(n for n, _ in outputs)
     return (f"\n\ndef {name}({', '.join(('xp',) + tuple(map(str, args)))}):\n"
-            f"    {_docstring(args, doc)}\n"
+            f"    {_docstring(args, doc, arg_docs)}\n"
             f"{_block(printer, outputs, prefix=prefix)}\n    return {ret}\n")
 
 

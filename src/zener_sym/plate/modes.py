@@ -122,7 +122,7 @@ def _check_plate(shape: object, support: object, aspect: object, impact: object,
 
 
 # ------------------------------------------------------------------------------ the circle
-def _circle_brackets(n: int, support: str) -> tuple[FloatArray, FloatArray]:
+def _circle_brackets(n: int, support: str, nu: float) -> tuple[FloatArray, FloatArray]:
     """Brackets [lo, hi] holding exactly the n-th axisymmetric root x_n = k_n b, n = 1..N.
 
     Clamped: J1/J0 = -I1/I0 lies in (-1, 0), which happens only between a zero of J0 and the
@@ -134,7 +134,8 @@ def _circle_brackets(n: int, support: str) -> tuple[FloatArray, FloatArray]:
     if support == "clamped":
         return (k - 0.5) * np.pi, (k + 0.5) * np.pi
     lo = (k - 1.0) * np.pi
-    lo[0] = 0.25  # g(x) ~ -(1 + nu) x (2 - ...) < 0 near 0+, and no root below j_{0,1} but x_1
+    # near 0, G = -(1 + nu) x + (5 + nu) x^5/96 + O(x^7) < 0 below x_1^4 ~ 96 (1 + nu)/(5 + nu)
+    lo[0] = min(0.25, 0.5 * (1.0 + nu) ** 0.25)
     return lo, k * np.pi
 
 
@@ -145,7 +146,7 @@ def _circle_roots(n: int, support: str, nu: float) -> FloatArray:
             return F.NUMPY.freq_clamped(x), F.NUMPY.freq_clamped_dx(x)
         return F.NUMPY.freq_ss(x, nu), F.NUMPY.freq_ss_dx(x, nu)
 
-    lo, hi = _circle_brackets(n, support)
+    lo, hi = _circle_brackets(n, support, nu)
     g_lo, g_hi = g(lo)[0], g(hi)[0]
     if np.any(np.sign(g_lo) == np.sign(g_hi)):  # the derivation's bracket claim, kept honest
         bad = int(np.argmax(np.sign(g_lo) == np.sign(g_hi))) + 1
@@ -153,7 +154,7 @@ def _circle_roots(n: int, support: str, nu: float) -> FloatArray:
     x = np.clip(_circle_guess(n, support, nu), lo, hi)
     s_lo = np.sign(g_lo)
     active = np.arange(n)
-    for _ in range(200):  # Newton converges in a few steps from the guess; bisection backs it
+    for it in range(200):  # Newton converges in a few steps from the guess; bisection backs it
         xa = x[active]
         gx, dg = g(xa)
         left = np.sign(gx) == s_lo[active]
@@ -161,7 +162,10 @@ def _circle_roots(n: int, support: str, nu: float) -> FloatArray:
         hi[active] = np.where(left, hi[active], xa)
         with np.errstate(divide="ignore", invalid="ignore"):
             newton = xa - gx / dg
+        # every 4th step after the 8th bisects: where the equation is flat to rounding (nu near
+        # -1), Newton could wander inside the bracket for ever
         inside = np.isfinite(newton) & (newton >= lo[active]) & (newton <= hi[active])
+        inside &= it < 8 or it % 4 != 3
         x_new = np.where(inside, newton, 0.5 * (lo[active] + hi[active]))
         x_new = np.where(gx == 0.0, xa, x_new)  # an exact root stays
         x[active] = x_new

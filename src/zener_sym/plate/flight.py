@@ -48,6 +48,11 @@ class Flight:
         w = np.einsum("n,nm->m", self.B, np.exp(np.outer(r.s, np.atleast_1d(dt)))).real
         return np.reshape(self.x_r + self.v * dt - w, np.shape(dt))
 
+    def gap1(self, r: Rates, t: float) -> float:
+        """g(t) at one time (the root finder's function: no array bookkeeping)."""
+        dt = t - self.t_r
+        return self.x_r + self.v * dt - float((self.B * np.exp(r.s * dt)).real.sum())
+
     def slope(self, r: Rates, t: float) -> float:
         """g'(t)."""
         e = np.exp(r.s * (t - self.t_r))
@@ -66,6 +71,9 @@ def end_bound(r: Rates, B: ComplexArray) -> float:
 def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
     """The time of the next contact after t_r, or None when the end is proved.
 
+    Raises RuntimeError if the ball moves towards the plate and yet no contact is found before
+    it passes the bound (possible only through a graze below the search's resolution).
+
     ``scale`` is the problem's time scale (the graze threshold is 1e-13 of it).
     """
     R = end_bound(r, fl.B)
@@ -81,7 +89,7 @@ def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
     amp = np.abs(fl.B)
     G2 = float(np.sum(r.omega**2 * amp)) + 1e-300
     A = float(np.sum(amp)) + abs(fl.x_r) * 1e-12 + 1e-300
-    g_r = float(fl.gap(r, np.array([fl.t_r]))[0])
+    g_r = fl.gap1(r, fl.t_r)
     d_r = fl.slope(r, fl.t_r)
     if g_r >= 0.0 and d_r > 0.0:
         return fl.t_r
@@ -100,6 +108,9 @@ def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
             if hit is not None:
                 return hit
         t_a = float(t[-1])
+    if fl.v > 0.0:
+        raise RuntimeError(f"no contact found after tau = {fl.t_r:.6g} although the ball moves "
+                           f"towards the plate (a graze below the search's resolution?)")
     return None
 
 
@@ -111,7 +122,7 @@ def _refine(r: Rates, fl: Flight, G2: float, a: float, b: float, ga: float, gb: 
     if max(ga, gb) + G2 * (b - a) ** 2 / 8.0 < 0.0:
         return None
     if gb >= 0.0 and (fl.slope(r, a) - G2 * (b - a) > 0.0 or b - a < tiny):
-        return float(brentq(lambda t: float(fl.gap(r, np.array([t]))[0]), a, b,
+        return float(brentq(lambda t: fl.gap1(r, t), a, b,
                             xtol=1e-15 * max(abs(b), 1.0), rtol=8.9e-16))
     if b - a < tiny:
         return None

@@ -22,24 +22,20 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
+from ..numerics.taylor import horner
 from ..typing import FloatArray
 
 __all__ = ["Rates", "phi2", "psi2", "Kernel"]
 
 ComplexArray = npt.NDArray[np.complex128]
 
+#: Largest kernel table (modes x steps complex numbers) built, in GiB.
+MAX_GIB = 2.0
 #: Below this |x| the series are used (12 terms: the next one is below 1e-17 there).
 _SERIES = 0.25
 _TERMS = 12
 _PHI2 = [1.0 / math.factorial(n) for n in range(2, 2 + _TERMS)]
 _PSI2 = [(n - 1) / math.factorial(n) for n in range(2, 2 + _TERMS)]
-
-
-def _series(x: ComplexArray, coef: list[float]) -> ComplexArray:
-    out = np.zeros_like(x)
-    for a in reversed(coef):
-        out = out * x + a
-    return out
 
 
 def phi2(x: ComplexArray) -> ComplexArray:
@@ -48,7 +44,8 @@ def phi2(x: ComplexArray) -> ComplexArray:
     small = np.abs(x) < _SERIES
     xs = np.where(small, 1.0, x)
     out = (np.expm1(xs) - xs) / xs**2
-    return np.where(small, _series(x, _PHI2), out)
+    res: ComplexArray = np.where(small, horner(_PHI2, x), out)
+    return res
 
 
 def psi2(x: ComplexArray) -> ComplexArray:
@@ -57,7 +54,8 @@ def psi2(x: ComplexArray) -> ComplexArray:
     small = np.abs(x) < _SERIES
     xs = np.where(small, 1.0, x)
     out = (1.0 + (xs - 1.0) * np.exp(xs)) / xs**2
-    return np.where(small, _series(x, _PSI2), out)
+    res: ComplexArray = np.where(small, horner(_PSI2, x), out)
+    return res
 
 
 @dataclass(frozen=True)
@@ -109,6 +107,10 @@ class Kernel:
             return
         n_new = max(n_steps + 1, 2 * have)
         r, h = self.rates, self.h
+        gib = 16.0 * len(r.s) * n_new / 2**30
+        if gib > MAX_GIB:
+            raise RuntimeError(f"{len(r.s)} modes over {n_new} steps need {gib:.1f} GiB for the "
+                               f"kernel (limit {MAX_GIB:g} GiB): use fewer modes or a looser rtol")
         E = np.empty((len(r.s), n_new), dtype=complex)
         # e^{s m h} by blocks: exp on the first block, then products (cheaper than exp)
         blk = min(n_new, 64)
@@ -131,7 +133,7 @@ class Kernel:
         the complex response at node k = len(F) - 1; y = Im(c P) / omega_d, y' = Im(c s P) /
         omega_d."""
         k = len(F) - 1
-        P = self.half * F[k]
+        P: ComplexArray = self.half * F[k]
         if k >= 2:
             P = P + self.whole * np.einsum("nm,m->n", self.E[:, :k - 1][:, ::-1], F[1:k])
         return P

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 __all__ = ["PlateContact", "PlateImpact", "CONTACT_FIELDS"]
 
 #: The fields of one contact that are extrapolated and carry an error estimate.
-CONTACT_FIELDS = ("start", "end", "peak_time", "peak_force", "impulse", "speed_after",
+CONTACT_FIELDS = ("start", "end", "max_force_time", "max_force", "impulse", "speed_after",
                   "plate_energy")
 
 
@@ -18,8 +18,9 @@ class PlateContact:
     ----------
     start, end : float
         tau at the contact's start (delta = 0 and rising) and end (delta back to 0).
-    peak_time, peak_force : float
-        tau and F-bar at the force's maximum.
+    max_force_time, max_force : float
+        tau and F-bar at the force's maximum (``max_force_N`` of the CLI's contacts, in Zener's
+        scales).
     impulse : float
         The contact's impulse (integral of F-bar over the contact), in units of m v_0.
     speed_after : float
@@ -31,8 +32,8 @@ class PlateContact:
 
     start: float
     end: float
-    peak_time: float
-    peak_force: float
+    max_force_time: float
+    max_force: float
     impulse: float
     speed_after: float
     plate_energy: float

@@ -22,7 +22,8 @@ from scipy.optimize import brentq
 from ..typing import FloatArray
 from .kernels import ComplexArray, Kernel, Rates, psi2
 
-__all__ = ["ContactRun", "step_contact", "end_of_contact"]
+__all__ = ["ContactRun", "step_contact", "end_of_contact", "start_kick", "end_defect",
+           "START_DEFECT", "zeta_m32"]
 
 
 @dataclass
@@ -36,6 +37,7 @@ class ContactRun:
     x_e: float
     v_e: float
     B_e: ComplexArray        # modal amplitudes at t_e
+    defect: float = 0.0      # impulse the linear pieces miss at the start and the end
 
     @property
     def t_e(self) -> float:
@@ -48,7 +50,7 @@ class ContactRun:
         if len(F) < 2:
             return 0.0
         # hats: a whole step at nodes 1 .. k-2, half a step plus half the partial step at k-1
-        return float(h * np.sum(F[1:-1]) + F[-1] * (h + self.a) / 2.0)
+        return float(h * np.sum(F[1:-1]) + F[-1] * (h + self.a) / 2.0 + self.defect)
 
     @property
     def peak(self) -> tuple[float, float]:
@@ -60,8 +62,8 @@ class ContactRun:
             den = f0 - 2.0 * f1 + f2
             if den < 0.0:
                 u = 0.5 * (f0 - f2) / den
-                return self.t_s + (i + u) * h, float(f1 - 0.25 * (f0 - f2) * u)
-        return self.t_s + i * h, float(F[i])
+                return float(self.t_s + (i + u) * h), float(f1 - 0.25 * (f0 - f2) * u)
+        return float(self.t_s + i * h), float(F[i])
 
 
 def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: ComplexArray,
@@ -77,7 +79,9 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
     while True:
         kernel.grow(n)
         m = np.arange(k0, n + 1)
-        d_free = x_s + v_s * h * m - _combine(B_s, kernel.E[:, k0:n + 1]).real
+        d_free: FloatArray = x_s + v_s * h * m.astype(float)
+        if np.any(B_s):          # the plate at rest (the first contact) adds nothing
+            d_free = d_free - _combine(B_s, kernel.E[:, k0:n + 1]).real
         F = np.concatenate([F, np.zeros(n + 1 - len(F))])
         k = _march(F, d_free, kernel.Lrev, kernel.L[0] + c_res, k0, n)
         if k is not None:
@@ -90,7 +94,8 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
 
 def _combine(B: ComplexArray, E: ComplexArray) -> ComplexArray:
     """B @ E without BLAS (a threaded complex BLAS costs more than it saves at these sizes)."""
-    return np.einsum("n,nm->m", B, E)
+    out: ComplexArray = np.einsum("n,nm->m", B, E)
+    return out
 
 
 def _march(F: FloatArray, d_free: FloatArray, Lrev: FloatArray, a: float, k0: int,
@@ -102,6 +107,8 @@ def _march(F: FloatArray, d_free: FloatArray, Lrev: FloatArray, a: float, k0: in
     """
     top = len(Lrev)          # Lrev[top - 1 - m] = L[m]
     dot, sqrt = np.dot, math.sqrt
+    f1 = float(F[k0 - 1])                    # the last two forces, as Python floats
+    f2 = float(F[k0 - 2]) if k0 >= 2 else 0.0
     for k in range(k0, n + 1):
         d = float(d_free[k - k0])
         if k > 1:
@@ -109,18 +116,18 @@ def _march(F: FloatArray, d_free: FloatArray, Lrev: FloatArray, a: float, k0: in
         if d <= 0.0:
             return k
         u = sqrt(d)
-        if k > 2:            # linear extrapolation, kept only if above the root
-            g = 2.0 * F[k - 1] - F[k - 2]
-            if g > 0.0:
-                ug = g ** (1.0 / 3.0) * (1.0 + 1e-9)
-                if ug < u and ug * ug * (1.0 + a * ug) >= d:
-                    u = ug
+        g = 2.0 * f1 - f2            # linear extrapolation, kept only if above the root
+        if k > 2 and g > 0.0:
+            ug = g ** (1.0 / 3.0) * (1.0 + 1e-9)
+            if ug < u and ug * ug * (1.0 + a * ug) >= d:
+                u = ug
         for _ in range(60):
             du = (u * u * (1.0 + a * u) - d) / (u * (2.0 + 3.0 * a * u))
             u -= du
             if du <= 4e-16 * u:
                 break
-        F[k] = u * u * u
+        f2, f1 = f1, u * u * u
+        F[k] = f1
     return None
 
 
@@ -151,9 +158,63 @@ def end_of_contact(kernel: Kernel, c_res: float, t_s: float, x_s: float, v_s: fl
     w_end = h if delta(h) >= 0.0 else brentq(delta, 0.0, h, xtol=1e-15 * max(h, 1e-300),
                                              rtol=8.9e-16)
     y_e, u_e = _modes_after(r, B1, f1, w_end)
+    v_e = v1 - 0.5 * f1 * w_end
+    # the force's (t_e - t)^{3/2} end, which the linear pieces miss: F ~ (-delta'_e u)^{3/2}
+    rate = max(float(np.sum(u_e)) - v_e, 0.0)
+    dI = rate**1.5 * h**2.5 * end_defect(w_end / h)
     return ContactRun(t_s=t_s, h=h, F=np.array(Fk), a=w_end,
-                      x_e=x1 + v1 * w_end - f1 * w_end**2 / 3.0, v_e=v1 - 0.5 * f1 * w_end,
-                      B_e=r.amplitude(y_e, u_e))
+                      x_e=x1 + v1 * w_end - f1 * w_end**2 / 3.0, v_e=v_e - dI,
+                      B_e=r.amplitude(y_e, u_e + r.c * dI), defect=dI)
+
+
+def zeta_m32(q: float) -> float:
+    """Hurwitz zeta(-3/2, q) for q > 0: sum_{j<10} (q + j)^{3/2} + zeta(-3/2, q + 10), the tail by
+    its Euler-Maclaurin expansion (Bernoulli terms through B_10: below 1e-15 at q >= 10)."""
+    tail = q + 10.0
+    head = sum((q + j) ** 1.5 for j in range(10))
+    # q^{5/2}/(s-1) + q^{3/2}/2 + sum_k B_2k/(2k)! (s)_{2k-1} q^{-s-2k+1}, s = -3/2
+    out = -tail**2.5 / 2.5 + 0.5 * tail**1.5
+    coef = _EM_COEF
+    p = tail**0.5
+    for c in coef:
+        out += c * p
+        p /= tail * tail
+    return float(head + out)
+
+
+def _em_coefficients() -> list[float]:
+    bern = [1.0 / 6.0, -1.0 / 30.0, 1.0 / 42.0, -1.0 / 30.0, 5.0 / 66.0]
+    s, out = -1.5, []
+    for k, b in enumerate(bern, start=1):
+        poch = 1.0
+        for i in range(2 * k - 1):
+            poch *= s + i
+        out.append(b / math.factorial(2 * k) * poch)
+    return out
+
+
+_EM_COEF = _em_coefficients()
+
+#: -zeta(-3/2): the impulse that linear pieces miss at a (tau - tau_s)^{3/2} start on the grid,
+#: in units of (delta'_s)^{3/2} h^{5/2} (Navot's extension of Euler-Maclaurin)
+START_DEFECT = -zeta_m32(1.0)
+
+
+def end_defect(theta: float) -> float:
+    """The impulse linear pieces miss at a (tau_e - tau)^{3/2} end a fraction theta of a step
+    after the last node, in units of (-delta'_e)^{3/2} h^{5/2}:
+    theta^{3/2}/2 - theta^{5/2}/2 - zeta(-3/2, theta) (Hurwitz zeta)."""
+    return float(theta**1.5 / 2.0 - theta**2.5 / 2.0 - zeta_m32(theta))
+
+
+def start_kick(r: Rates, h: float, v_s: float, B_s: ComplexArray) -> tuple[float, ComplexArray,
+                                                                              float]:
+    """(v_s, B_s, dI) with the start's missed impulse dI applied at t_s: ball slowed, modes
+    pushed."""
+    rate = max(v_s - float(np.sum((r.s * B_s).real)), 0.0)
+    dI = rate**1.5 * h**2.5 * START_DEFECT
+    y, u = B_s.real, (r.s * B_s).real
+    return v_s - dI, r.amplitude(y, u + r.c * dI), dI
 
 
 def _modes_after(r: Rates, B1: ComplexArray, f1: float,

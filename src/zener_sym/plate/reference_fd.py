@@ -33,17 +33,13 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from typing import Callable
 
-import numpy as np
-import scipy.linalg
-from scipy.linalg.blas import dsbmv
-from scipy.linalg.lapack import dpbtrs
-
-from ..typing import FloatArray
-from .reference_fe import AxisymmetricPlateFE, plate_fe, upper_band
+from .reference_fd_march import hertz_secant, march
+from .reference_fe import plate_fe
 
 __all__ = ["ReferenceContact", "ReferenceImpact", "simulate", "reference_impact",
-           "hertz_secant"]
+           "default_mesh", "hertz_secant"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -84,9 +80,18 @@ class ReferenceImpact:
     error : float
         The estimated absolute error of ``e`` (0 for a single run: see :func:`simulate`).
     energy_drift : float
-        The largest relative change of the total energy seen during the run(s).
-    n_elements, dt : int, float
-        The (finest) mesh and step used.
+        The largest relative change of the total energy seen during the run(s) (0 when not
+        tracked).
+    n_elements : int
+        The (finest) mesh used.
+    dt : float
+        The (finest) step used.
+    complete : bool
+        True when the run reached the proved end (no contact can follow); False when it was
+        stopped after ``max_contacts`` contacts, and ``e`` is the speed after the last of them.
+    contact_errors : tuple of ReferenceContact
+        The estimated absolute error of every field of every contact, estimated as ``error``
+        (empty for a single run).
     """
 
     contacts: tuple[ReferenceContact, ...]
@@ -96,189 +101,8 @@ class ReferenceImpact:
     energy_drift: float
     n_elements: int
     dt: float
-
-
-def hertz_secant(a: float, b: float) -> float:
-    """The discrete gradient (Phi(b) - Phi(a)) / (b - a) of Phi = (2/5) max(d, 0)^{5/2}, free of
-    cancellation (Phi'(a) = max(a, 0)^{3/2} when a == b)."""
-    if a <= 0.0 and b <= 0.0:
-        return 0.0
-    if a <= 0.0 or b <= 0.0:
-        hi, lo = (a, b) if a > b else (b, a)
-        return 0.4 * hi**2.5 / (hi - lo)
-    p, q = math.sqrt(a), math.sqrt(b)
-    # (q^5 - p^5) / (q^2 - p^2) with the common factor (q - p) divided out
-    return 0.4 * (q**4 + q**3 * p + q**2 * p**2 + q * p**3 + p**4) / (q + p)
-
-
-def _secant_slope(a: float, b: float) -> float:
-    """d/db of :func:`hertz_secant` (a, b) (Newton's slope for delta_{n+1} = b)."""
-    if b <= 0.0:
-        return 0.0 if a <= 0.0 else 0.4 * a**2.5 / (a - b) ** 2
-    if a <= 0.0:
-        return 0.4 * (2.5 * b**1.5 * (b - a) - b**2.5) / (b - a) ** 2
-    p, q = math.sqrt(a), math.sqrt(b)
-    num = q**4 + q**3 * p + q**2 * p**2 + q * p**3 + p**4
-    dnum = 4 * q**3 + 3 * q**2 * p + 2 * q * p**2 + p**3
-    return 0.4 * (dnum * (q + p) - num) / ((q + p) ** 2 * 2.0 * q)
-
-
-def _solve_contact(d_n: float, d_star: float, s: float) -> float:
-    """delta_{n+1} from delta_{n+1} + s G(delta_n, delta_{n+1}) = d_star, G the Hertz secant:
-    the left side increases strictly, so the root is unique and bracketed by
-    [d_star - s max(d_n, d_star, 0)^{3/2}, d_star]; Newton, safeguarded by bisection."""
-    if d_n <= 0.0 and d_star <= 0.0:
-        return d_star
-    lo, hi = d_star - s * max(d_n, d_star, 0.0) ** 1.5, d_star
-    d = 0.5 * (lo + hi)
-    for _ in range(200):
-        f = d + s * hertz_secant(d_n, d) - d_star
-        if f == 0.0:
-            return d
-        if f > 0.0:
-            hi = d
-        else:
-            lo = d
-        step = d - f / (1.0 + s * _secant_slope(d_n, d))
-        d_next = step if lo < step < hi else 0.5 * (lo + hi)
-        if d_next == d or hi - lo <= 2e-16 * max(abs(lo), abs(hi)):
-            return d_next
-        d = d_next
-    return d
-
-
-def _hermite_root(t0: float, dt: float, d0: float, d1: float, s0: float, s1: float) -> float:
-    """The time in [t0, t0 + dt] where the cubic Hermite interpolant of delta (values d0, d1,
-    slopes s0, s1) crosses zero, by bisection (d0 and d1 of opposite signs, or zero)."""
-    def cubic(x: float) -> float:
-        h00, h10 = 1 - 3 * x**2 + 2 * x**3, x - 2 * x**2 + x**3
-        h01, h11 = 3 * x**2 - 2 * x**3, -x**2 + x**3
-        return h00 * d0 + h10 * dt * s0 + h01 * d1 + h11 * dt * s1
-    lo, hi = 0.0, 1.0
-    sign_lo = d0 > 0.0
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        if (cubic(mid) > 0.0) == sign_lo:
-            lo = mid
-        else:
-            hi = mid
-    return t0 + dt * 0.5 * (lo + hi)
-
-
-def _peak(deltas: list[float]) -> float:
-    """The peak of delta from its three samples around the largest one (parabola), as a force."""
-    d = max(deltas[1], 0.0)
-    if deltas[0] is not None and deltas[2] is not None:
-        a, b, c = deltas
-        curv = a - 2 * b + c
-        if curv < 0.0:
-            d = b - 0.125 * (c - a) ** 2 / curv
-    return float(d**1.5)
-
-
-class _Plate:
-    """The factorised plate of one run: A = (2/dt^2) M + (beta^2/2) K and the unit response g."""
-
-    def __init__(self, fe: AxisymmetricPlateFE, lam: float, beta: float, dt: float) -> None:
-        self.fe, self.lam, self.beta, self.dt = fe, lam, beta, dt
-        a = (2.0 / dt**2) * fe.mass + (0.5 * beta**2) * fe.stiffness
-        # Fortran order: the LAPACK/BLAS wrappers would otherwise copy the bands at every call
-        self.chol = np.asfortranarray(scipy.linalg.cholesky_banded(upper_band(a)))
-        self.mass_band = np.asfortranarray(upper_band(fe.mass))
-        self.stiff_band = np.asfortranarray(upper_band(fe.stiffness))
-        load = np.zeros(fe.n_dof)
-        load[0] = 8.0 * lam * beta
-        self.g = self.solve(load)
-        self.compliance = 8.0 * lam / beta * fe.static_compliance()
-
-    def solve(self, rhs: FloatArray) -> FloatArray:
-        x, info = dpbtrs(self.chol, rhs, lower=0)
-        if info != 0:
-            raise RuntimeError(f"banded solve failed (LAPACK info {info})")
-        return np.asarray(x)
-
-    def rhs(self, u: FloatArray, v: FloatArray) -> FloatArray:
-        """(2/dt) M v - beta^2 K u, by BLAS band products (the step's right-hand side)."""
-        mv = dsbmv(3, 2.0 / self.dt, self.mass_band, v, lower=0)
-        return np.asarray(dsbmv(3, -self.beta**2, self.stiff_band, u, beta=1.0, y=mv, lower=0))
-
-    def energy(self, u: FloatArray, v: FloatArray) -> float:
-        """E_p = (v^T M v + beta^2 u^T K u) / (16 lambda beta)."""
-        mv = dsbmv(3, 1.0, self.mass_band, v, lower=0)
-        ku = dsbmv(3, self.beta**2, self.stiff_band, u, lower=0)
-        return float((v @ mv + u @ ku) / (16.0 * self.lam * self.beta))
-
-
-class _Contacts:
-    """Bookkeeping of the contacts along the march: start and end by Hermite interpolation of
-    delta, the peak by a parabola through the samples, the impulse from the ball's momentum."""
-
-    def __init__(self) -> None:
-        self.done: list[ReferenceContact] = []
-        self.active = False
-        self.start = self.p_before = 0.0
-        self.best = -math.inf
-        self.window: list[float | None] = [None, None, None]
-        self.prev: float | None = None
-
-    def step(self, t: float, dt: float, old: tuple[float, float, float],
-             new: tuple[float, float, float], touched: bool) -> bool:
-        """Record the step from t to t + dt (states (delta, delta', p) before and after; touched:
-        the contact force was nonzero). Returns True when a contact ended in this step."""
-        (d0, s0, p0), (d1, s1, p1) = old, new
-        if touched and not self.active:
-            self.active, self.p_before, self.best = True, p0, -math.inf
-            self.start = t if d0 >= 0.0 else _hermite_root(t, dt, d0, d1, s0, s1)
-            self.window, self.prev = [None, None, None], d0
-        if not self.active:
-            return False
-        if self.window[1] is not None and self.window[2] is None:
-            self.window[2] = d1
-        if d1 > self.best:
-            self.best, self.window = d1, [self.prev, d1, None]
-        self.prev = d1
-        if d1 > 0.0:
-            return False
-        end = _hermite_root(t, dt, d0, d1, s0, s1)
-        self.done.append(ReferenceContact(self.start, end, _peak(self.window),
-                                          self.p_before - p1, -p1))
-        self.active = False
-        return True
-
-
-def _march(plate: _Plate, t_max: float, track_energy: bool) -> tuple[list[ReferenceContact], float,
-                                                                   float, float]:
-    """Step from the first touch (tau = 0) to the proved end; returns the contacts, the ball's
-    final velocity, the plate's energy and the largest relative energy drift seen."""
-    dt, fe = plate.dt, plate.fe
-    g, g0 = plate.g, float(plate.g[0])
-    s = 0.5 * dt**2 + g0
-    u, v = np.zeros(fe.n_dof), np.zeros(fe.n_dof)
-    x, p, t, delta = 0.0, 1.0, 0.0, 0.0
-    contacts, e0, drift = _Contacts(), 0.5, 0.0
-    bound, n_steps = math.inf, int(math.ceil(t_max / dt))
-    for _ in range(n_steps):
-        old = (delta, p - v[0], p)
-        du = plate.solve(plate.rhs(u, v))
-        d_star = x + dt * p - u[0] - du[0]
-        d_new = _solve_contact(delta, d_star, s)
-        force = (d_star - d_new) / s
-        if force != 0.0:
-            du += force * g
-        v = (2.0 / dt) * du - v
-        u = u + du
-        x, p_new = x + dt * p - 0.5 * dt**2 * force, p - dt * force
-        ended = contacts.step(t, dt, old, (d_new, p_new - v[0], p_new), force > 0.0)
-        delta, p, t = d_new, p_new, t + dt
-        if ended:
-            bound = math.sqrt(2.0 * plate.energy(u, v) * plate.compliance)
-        if track_energy:
-            total = 0.5 * p**2 + 0.4 * max(delta, 0.0) ** 2.5 + plate.energy(u, v)
-            drift = max(drift, abs(total - e0) / e0)
-        if not contacts.active and p < 0.0 and x < -bound:
-            return contacts.done, p, plate.energy(u, v), drift
-    raise RuntimeError(f"the ball had not left the plate for good by tau = {t_max:g} "
-                       f"({n_steps} steps); raise t_max")
+    complete: bool = True
+    contact_errors: tuple[ReferenceContact, ...] = ()
 
 
 def _check(lam: float, beta: float, support: str, nu: float) -> None:
@@ -294,7 +118,8 @@ def _check(lam: float, beta: float, support: str, nu: float) -> None:
 
 def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elements: int = 200,
              dt: float = 0.01, grading: float = 2.0, t_max: float = 1e5,
-             track_energy: bool = False) -> ReferenceImpact:
+             track_energy: bool = False, max_contacts: int = 0,
+             linger: float = 0.0) -> ReferenceImpact:
     """One run of the second method on one mesh with one step (no extrapolation).
 
     Parameters
@@ -317,16 +142,169 @@ def simulate(lam: float, beta: float, support: str, nu: float = 0.3, *, n_elemen
         Give up (RuntimeError) if the ball has not left for good by this tau.
     track_energy : bool
         Evaluate the total energy after every step and report its largest relative drift.
+    max_contacts : int
+        Stop after this many contacts (0: run to the proved end).
+    linger : float
+        Keep stepping this long (in tau) past the proved end: a test of the proof, after which
+        no contact may follow.
 
     Returns
     -------
     ReferenceImpact
         With ``error`` 0: a single run has no error estimate.
+
+    Raises
+    ------
+    ValueError
+        For a bad lambda, beta, support, nu, dt or mesh.
+    RuntimeError
+        If the ball has not left for good by ``t_max``.
+
+    Examples
+    --------
+    >>> from zener_sym.plate.reference_fd import simulate
+    >>> r = simulate(0.5, 0.05, "clamped", n_elements=40, dt=0.02)
+    >>> len(r.contacts), round(r.e, 3), r.complete
+    (1, 0.463, True)
     """
     _check(lam, beta, support, nu)
     if not (math.isfinite(dt) and dt > 0.0):
         raise ValueError(f"dt must be a finite number > 0, got {dt!r}")
-    plate = _Plate(plate_fe(support, nu, n_elements, grading), float(lam), float(beta), dt)
-    contacts, p_final, e_plate, drift = _march(plate, t_max, track_energy)
-    return ReferenceImpact(tuple(contacts), -p_final, e_plate / 0.5, 0.0, drift,
-                           int(n_elements), dt)
+    fe = plate_fe(support, nu, n_elements, grading)
+    raw, p_final, e_plate, complete, drift = march(fe, float(lam), float(beta), dt, t_max,
+                                                   int(max_contacts), track_energy,
+                                                   float(linger))
+    return ReferenceImpact(tuple(ReferenceContact(*map(float, c)) for c in raw), float(-p_final),
+                           float(e_plate / 0.5), 0.0, float(drift), int(n_elements), float(dt),
+                           complete)
+
+
+_FIELDS = ("start", "end", "max_force", "impulse", "speed_after")
+
+
+def _richardson(fine: ReferenceImpact, coarse: ReferenceImpact) -> ReferenceImpact:
+    """Richardson's extrapolation for a second-order step (dt halved): x + (x - x_coarse) / 3,
+    field by field and contact by contact (the runs must have the same contacts)."""
+    def ex(a: float, b: float) -> float:
+        return float(a + (a - b) / 3.0)
+    contacts = tuple(ReferenceContact(*(ex(getattr(f, k), getattr(c, k)) for k in _FIELDS))
+                     for f, c in zip(fine.contacts, coarse.contacts))
+    return dataclasses.replace(fine, contacts=contacts, e=ex(fine.e, coarse.e),
+                               plate_energy=ex(fine.plate_energy, coarse.plate_energy))
+
+
+def _shift(a: ReferenceImpact, fine: ReferenceImpact, coarse: ReferenceImpact) -> ReferenceImpact:
+    """a plus the change from ``coarse`` to ``fine`` (the mesh correction), field by field."""
+    def sh(x: float, f: float, c: float) -> float:
+        return float(x + (f - c))
+    contacts = tuple(ReferenceContact(*(sh(getattr(x, k), getattr(f, k), getattr(c, k))
+                                        for k in _FIELDS))
+                     for x, f, c in zip(a.contacts, fine.contacts, coarse.contacts))
+    return dataclasses.replace(a, contacts=contacts, e=sh(a.e, fine.e, coarse.e),
+                               plate_energy=sh(a.plate_energy, fine.plate_energy,
+                                               coarse.plate_energy))
+
+
+def _same_contacts(runs: list[ReferenceImpact]) -> bool:
+    return len({len(r.contacts) for r in runs}) == 1
+
+
+def default_mesh(beta: float) -> int:
+    """The number of elements for beta: the flexural wavenumber at the frequencies of a contact
+    scales as beta^(-1/2) (omega = beta (k b)^2), so the mesh does too; at least 40 elements."""
+    return max(40, int(math.ceil(15.0 / math.sqrt(beta))))
+
+
+def reference_impact(lam: float, beta: float, support: str, nu: float = 0.3, *,
+                     rtol: float = 1e-5, dt: float | None = None, n_elements: int | None = None,
+                     max_halvings: int = 6, t_max: float = 1e5) -> ReferenceImpact:
+    """The impact on the bounded circular plate, converged in step and mesh, with an error
+    estimate: the second method of issue 37 (no modal expansion).
+
+    The step is halved from ``dt`` and each pair of runs extrapolated (Richardson, order 2) until
+    three successive extrapolations of e agree to ``rtol * e`` (two agreeing ones can be a
+    coincidence before the error's expansion in the step settles); the mesh correction is the
+    change of every quantity from ``n_elements`` to twice as many elements at the coarsest step.
+
+    Parameters
+    ----------
+    lam, beta, support, nu : float, float, str, float
+        As in :func:`simulate`.
+    rtol : float
+        Requested relative accuracy of e, in (0, 0.1).
+    dt : float, optional
+        The coarsest step in tau (default 0.0125 (rtol / 1e-5)^{1/2}, at most 0.05).
+    n_elements : int, optional
+        The mesh (default :func:`default_mesh`).
+    max_halvings : int
+        At most this many halvings of the step (RuntimeError if rtol is not met by then).
+    t_max : float
+        Passed to :func:`simulate`.
+
+    Returns
+    -------
+    ReferenceImpact
+        The extrapolated contacts and e; ``error`` is the larger of the last two differences of
+        successive extrapolations of e, plus the size of the mesh correction (absolute).
+
+    Raises
+    ------
+    ValueError
+        For a bad lambda, beta, support, nu or rtol.
+    RuntimeError
+        If rtol is not reached within ``max_halvings``, or the runs' contacts never agree.
+
+    Examples
+    --------
+    >>> from zener_sym.plate.reference_fd import reference_impact
+    >>> r = reference_impact(0.5, 0.05, "clamped", rtol=1e-3)
+    >>> f"{r.e:.4f}", r.error < 1e-3 * r.e
+    ('0.4626', True)
+    """
+    _check(lam, beta, support, nu)
+    if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not 0.0 < rtol < 0.1:
+        raise ValueError(f"rtol must be a number in (0, 0.1), got {rtol!r}")
+    n = default_mesh(beta) if n_elements is None else int(n_elements)
+    dt0 = min(0.05, 0.0125 * math.sqrt(rtol / 1e-5)) if dt is None else float(dt)
+    def run(n_el: int, step: float) -> ReferenceImpact:
+        return simulate(lam, beta, support, nu, n_elements=n_el, dt=step, t_max=t_max)
+    base, ex = _converge_in_step(run, n, dt0, rtol, max_halvings)
+    finer = run(2 * n, base.dt)
+    if not _same_contacts([finer, base]):
+        raise RuntimeError("the mesh refinement changed the number of contacts; pass a finer "
+                           "n_elements")
+    best = _shift(ex[-1], finer, base)
+
+    def err(get: Callable[[ReferenceImpact], float]) -> float:
+        return float(max(abs(get(a) - get(b)) for a, b in zip(ex[-3:], ex[-2:]))
+                     + abs(get(finer) - get(base)))
+
+    def field(i: int, k: str) -> Callable[[ReferenceImpact], float]:
+        return lambda r: float(getattr(r.contacts[i], k))
+    contact_errors = tuple(ReferenceContact(*(err(field(i, k)) for k in _FIELDS))
+                           for i in range(len(best.contacts)))
+    return dataclasses.replace(best, error=err(lambda r: r.e), contact_errors=contact_errors,
+                               n_elements=2 * n)
+
+
+def _converge_in_step(run: Callable[[int, float], ReferenceImpact], n: int, dt0: float,
+                      rtol: float, max_halvings: int) -> tuple[ReferenceImpact,
+                                                                list[ReferenceImpact]]:
+    """Halve the step until three successive Richardson extrapolations of e agree to rtol;
+    returns the coarsest run of the final streak of runs with the same contacts (where the mesh
+    correction is measured) and the extrapolations of that streak."""
+    runs = [run(n, dt0)]
+    base = runs[0]
+    ex: list[ReferenceImpact] = []
+    for k in range(1, max_halvings + 1):
+        runs.append(run(n, dt0 / 2**k))
+        if not _same_contacts(runs[-2:]):  # a grazing contact came or went: start again
+            base, ex = runs[-1], []
+            continue
+        ex.append(_richardson(runs[-1], runs[-2]))
+        if len(ex) >= 3 and max(abs(a.e - b.e) for a, b in zip(ex[-3:], ex[-2:])) \
+                <= rtol * abs(ex[-1].e):
+            return base, ex
+    raise RuntimeError(f"the second method did not reach rtol = {rtol:g} in e with "
+                       f"{max_halvings} halvings of dt = {dt0:g}; the last runs gave "
+                       f"e = {[float(r.e) for r in runs[-3:]]}")

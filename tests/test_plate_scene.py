@@ -278,7 +278,7 @@ def test_finite_plate_history_is_the_solvers_force():
     for c in res.contacts:
         m = (tau >= c.start) & (tau <= c.end)
         assert np.trapezoid(h.force[m], tau[m]) == pytest.approx(c.impulse, rel=1e-3)
-        assert h.force[m].max() == pytest.approx(c.peak_force, rel=1e-3)
+        assert h.force[m].max() == pytest.approx(c.max_force, rel=1e-3)
     between = (tau > res.contacts[0].end) & (tau < res.contacts[1].start)
     assert np.all(h.force[between] == 0.0)
     assert h.impulse[-1] == pytest.approx(1.0 + res.e, rel=1e-4)

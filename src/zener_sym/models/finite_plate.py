@@ -308,11 +308,11 @@ def summary_of(res: Any) -> dict[str, float]:
     (delta_m = F_peak^{2/3}: F = delta^{3/2} at every instant), every contact's largest force,
     and the restitution after the last contact."""
     first = res.contacts[0]
-    tau_d, tau_dc = first.end - first.start, first.peak_time - first.start
+    tau_d, tau_dc = first.end - first.start, first.max_force_time - first.start
     e = float(res.e)
-    return {"delta_m": first.peak_force ** (2.0 / 3.0), "tau_dc": tau_dc, "tau_d": tau_d,
+    return {"delta_m": first.max_force ** (2.0 / 3.0), "tau_dc": tau_dc, "tau_d": tau_d,
             "tau_dr": tau_d - tau_dc, "eta": (tau_d - tau_dc) / tau_dc, "e": e,
-            "F_m": max(c.peak_force for c in res.contacts), "impulse": 1.0 + e,
+            "F_m": max(c.max_force for c in res.contacts), "impulse": 1.0 + e,
             "xi": 1.0 - e * e}
 
 

@@ -471,7 +471,7 @@ class Scene:
             from ..models.finite_plate import impact
 
             rows = impact(self.lam, **res.options).contacts
-            return [Contact(c.start * T, c.end * T, c.peak_force * Fs, c.impulse * m * v0,
+            return [Contact(c.start * T, c.end * T, c.max_force * Fs, c.impulse * m * v0,
                             c.speed_after * v0) for c in rows]
         if None in (res.contact_duration_s, res.max_force_N, res.e):
             return []

@@ -283,3 +283,13 @@ def test_finite_plate_history_is_the_solvers_force():
     assert np.all(h.force[between] == 0.0)
     assert h.impulse[-1] == pytest.approx(1.0 + res.e, rel=1e-4)
     assert np.allclose(h.velocity, 1.0 - h.impulse) and np.allclose(h.delta ** 1.5, h.force)
+
+
+@pytest.mark.slow
+def test_report_has_a_finite_plate_section(tmp_path):
+    from zener_sym.report import build
+
+    assert "finite plates" in [n for n, _ in build.SECTIONS]
+    md = dict(build.SECTIONS)["finite plates"](tmp_path)
+    assert md.startswith("## Finite plates") and md.count("model `finite-plate`") == 3
+    assert "| 5 |" in md   # the 50 mm glass plate's fifth contact

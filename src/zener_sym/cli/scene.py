@@ -7,7 +7,7 @@ import os
 import sys
 import warnings
 from pathlib import Path
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING, Any, cast
 
 from ..scene.checks import ZenerWarning
 from ..scene.materials import PRESETS, Material
@@ -150,7 +150,8 @@ def run(args: argparse.Namespace, out: Out = print) -> int:
     try:
         plot = None if args.plot is None else _plot_path(args.plot)
         scene = scene_from_args(args)
-        options = {} if args.n_modes is None else {"n_modes": _count(args.n_modes, "--n-modes")}
+        options: dict[str, Any] = ({} if args.n_modes is None else
+                                   {"n_modes": _count(args.n_modes, "--n-modes")})
         if options and args.model != "finite-plate":
             raise ValueError("--n-modes goes with --model finite-plate")
         with warnings.catch_warnings():

@@ -60,7 +60,7 @@ KNOWN = frozenset(("all",) + QUANTITIES + tuple(_ALIASES))
 @functools.lru_cache(maxsize=1)
 def load() -> dict[str, Any]:
     """The committed criterion table (``data/plate_criterion.json``)."""
-    text = resources.files("zener_sym").joinpath("data", TABLE).read_text(encoding="utf-8")
+    text = (resources.files("zener_sym") / "data" / TABLE).read_text(encoding="utf-8")
     return dict(json.loads(text))
 
 

@@ -29,12 +29,17 @@ from . import formulas as F
 from .modal import ModalPlate
 
 __all__ = ["modal_plate", "plate_constants", "dimensionless_modes", "PlateConstants",
-           "SHAPES", "SUPPORTS", "MAX_MODES"]
+           "SHAPES", "SUPPORTS", "MAX_MODES", "ASPECT_RANGE", "EDGE_GAP"]
 
 #: The plate shapes: a circle struck at its centre, a rectangle struck anywhere inside.
 SHAPES = ("circle", "rectangle")
 #: The edge supports; the rectangle is simply supported only (its modes are then Navier's).
 SUPPORTS = ("clamped", "simply-supported")
+#: The rectangle's aspect a/b allowed (beyond it, a strip is a beam).
+ASPECT_RANGE = (1e-3, 1e3)
+#: The closest an impact point may come to a rectangle's edge, as a fraction of the side: within
+#: a plate's thickness of its support Kirchhoff's plate does not hold.
+EDGE_GAP = 1e-4
 #: The largest mode count: a million modes take 16 MB and about a second to find; more would
 #: only feed rounding (the static correction covers the modes left out).
 MAX_MODES = 1_000_000
@@ -101,11 +106,17 @@ def _check_geometry(shape: str, aspect: object, impact: object) -> tuple[float, 
             raise ValueError(f"impact = {tuple(impact)!r}: a circle is struck at its centre "
                              "(0.5, 0.5) only (its modes here are the axisymmetric ones)")
         return 1.0, xi, eta
-    s = _check_real("aspect", aspect, lo=0.0, allowed="a/b > 0 and finite")
+    s = _check_real("aspect", aspect, lo=ASPECT_RANGE[0], hi=ASPECT_RANGE[1], lo_open=False,
+                    hi_open=False, allowed=f"{ASPECT_RANGE[0]:g} <= a/b <= {ASPECT_RANGE[1]:g} "
+                    "(a longer plate is a beam)")
     if not (0.0 < xi < 1.0 and 0.0 < eta < 1.0):
         raise ValueError(f"impact = {tuple(impact)!r} is outside the plate: each fraction "
                          "(x/a, y/b) must lie strictly between 0 and 1 (on the supported edge "
                          "no mode moves)")
+    if min(xi, eta, 1.0 - xi, 1.0 - eta) < EDGE_GAP * (1.0 - 1e-9):  # 1 - 0.9999 rounds below
+        raise ValueError(f"impact = {tuple(impact)!r} is closer to the supported edge than "
+                         f"{EDGE_GAP:g} of the side: allowed {EDGE_GAP:g} <= x/a, y/b <= "
+                         f"{1 - EDGE_GAP:g} (nearer, Kirchhoff's thin plate does not hold)")
     return s, xi, eta
 
 
@@ -320,10 +331,10 @@ def modal_plate(lam: float, beta: float, *, shape: str = "circle", support: str,
         How many modes, 1 <= n_modes <= :data:`MAX_MODES`; those with a node at the impact point
         are not counted.
     aspect : float
-        The rectangle's a/b > 0 (a circle: leave 1.0).
+        The rectangle's a/b, within :data:`ASPECT_RANGE` (a circle: leave 1.0).
     impact : (float, float)
-        The impact point as fractions (x/a, y/b) of the rectangle's sides, each in (0, 1); a
-        circle only at its centre (0.5, 0.5).
+        The impact point as fractions (x/a, y/b) of the rectangle's sides, each at least
+        :data:`EDGE_GAP` from 0 and 1; a circle only at its centre (0.5, 0.5).
     nu : float
         Poisson's ratio of the plate, -1 < nu < 0.5; only the simply supported circle depends
         on it.
@@ -337,8 +348,9 @@ def modal_plate(lam: float, beta: float, *, shape: str = "circle", support: str,
     ------
     ValueError
         An unknown shape or support (or a clamped rectangle), an impact point outside the plate
-        (or off a circle's centre), nu outside (-1, 0.5), lambda < 0 or beta <= 0 or either not
-        finite, n_modes not an integer in [1, MAX_MODES].
+        (or off a circle's centre, or within EDGE_GAP of a rectangle's edge), an aspect outside
+        ASPECT_RANGE, nu outside (-1, 0.5), lambda < 0 or beta <= 0 or either not finite,
+        n_modes not an integer in [1, MAX_MODES].
 
     Examples
     --------

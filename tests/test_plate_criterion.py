@@ -42,6 +42,7 @@ def _check(lam, beta_eq, supports, actual, shape="circle"):
             assert actual <= rtol, (lam, beta_eq, supports, actual, rtol, v.reason)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("support", pcb.SUPPORTS)
 def test_criterion_is_conservative_between_grid_points(support):
     table = crit.load()
@@ -59,6 +60,7 @@ def test_criterion_is_conservative_between_grid_points(support):
     assert claimed > 0  # the criterion does say Zener holds somewhere on this grid
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("aspect,impact", [(1.0, (0.5, 0.5)), (2.0, (0.5, 0.5)),
                                            (1.0, (0.25, 0.5)), (1.5, (0.2, 0.3))])
 def test_rectangles_are_judged_conservatively(aspect, impact):
@@ -104,6 +106,7 @@ def test_committed_table_matches_its_grid():
     assert pcb.compare(table, moved)
 
 
+@pytest.mark.slow
 def test_rebuilt_cell_matches_the_committed_table():
     # one row of the committed table rebuilt: the same numbers to the compare tolerance
     table = crit.load()

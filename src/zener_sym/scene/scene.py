@@ -365,7 +365,11 @@ class Scene:
         return checks.static_checks(self)
 
     def __repr__(self) -> str:
-        pr = "" if self.plate_radius is None else f", plate_radius={self.plate_radius!r}"
+        g = self.geometry
+        pr = "" if g is None else (f", plate_radius={g.size[0]!r}" if g.shape == "circle" else
+                                   f", plate_size={g.size!r}, impact_at={g.impact_at!r}")
+        if g is not None and g.support is not None:
+            pr += f", support={g.support!r}"
         return (f"Scene(sphere={self.sphere.name!r}, plate={self.plate.name!r}, "
                 f"radius={self.radius!r}, thickness={self.thickness!r}, v0={self.v0!r}{pr})")
 

@@ -293,3 +293,15 @@ def test_report_has_a_finite_plate_section(tmp_path):
     md = dict(build.SECTIONS)["finite plates"](tmp_path)
     assert md.startswith("## Finite plates") and md.count("model `finite-plate`") == 3
     assert "| 5 |" in md   # the 50 mm glass plate's fifth contact
+
+
+@pytest.mark.slow
+def test_plate_loss_reaches_the_solver():
+    # a damped plate gives back less of the energy it took: the later contacts, which return
+    # that energy to the ball, give a smaller e than on the undamped plate
+    kw = dict(radius="2.5 mm", thickness="1 mm", v0="1 m/s", plate_radius="50 mm",
+              support="clamped")
+    undamped = zs.Scene("steel", "glass", **kw).result(rtol=1e-3)
+    damped = zs.Scene("steel", "glass", plate_loss=0.05, **kw).result(rtol=1e-3)
+    assert damped.options["loss"] == 0.05 and undamped.options["loss"] == 0.0
+    assert damped.e < undamped.e

@@ -145,6 +145,9 @@ def test_cli_json_contract(capsys):
     (["--plate-radius", "50mm", "--support", "clamped", "--plate-loss", "1"], "0 <= loss < 1"),
     (["--plate-radius", "50mm", "--plate-size", "50mm,50mm"], "not both"),
     (["--support", "clamped"], "needs a bounded plate"),
+    (["--model", "finite-plate"], "needs the plate's size and support"),
+    (["--plate-radius", "50mm", "--model", "finite-plate"], "needs the plate's size and support"),
+    (["--n-modes", "64"], "--n-modes goes with --model finite-plate"),
 ])
 def test_cli_refusals_are_one_line(capsys, extra, msg):
     rc, out, err = _run(capsys, SCENE + extra + ["--json"])

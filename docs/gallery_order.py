@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-ORDER = ("plot_drop_ball.py", "plot_force_history.py", "plot_compare_models.py",
+ORDER = ("plot_drop_ball.py", "plot_finite_plate.py", "plot_force_history.py", "plot_compare_models.py",
          "plot_work_precision.py", "plot_paper_figure.py", "plot_dem_lookup.py",
          "plot_calibrate_dissipation.py", "plot_lammps.py", "plot_ham_convergence.py")
 

@@ -264,6 +264,7 @@ FRESH_ELSEWHERE = {
     "envelopes": "test_envelopes.py::test_committed_table_is_up_to_date",
     "ham-convergence": "test_ham_higher.py", "peers": "test_viscoelastic.py",
     "figures": "test_figures.py", "audit": "test_audit.py",
+    "plate-criterion": "test_plate_criterion.py::test_rebuilt_cell_matches_the_committed_table",
 }
 
 

@@ -389,6 +389,38 @@ def _lambda_series_fresh(root: Path | None) -> Texts:
     return {"src/zener_sym/data/lambda_series.json": ls.coefficients_json(ctx)}
 
 
+def _plate_criterion_fresh(root: Path | None) -> Texts:
+    from .scene import plate_criterion_build as pcb
+
+    return {"src/zener_sym/data/plate_criterion.json": pcb.dumps(pcb.build())}
+
+
+def _plate_criterion_same(rel: str, old: str, new: str) -> list[str]:
+    from .scene import plate_criterion_build as pcb
+
+    return pcb.compare(json.loads(old), json.loads(new))
+
+
+def _finite_plate_fresh(root: Path | None) -> Texts:
+    from .report import finite_plate
+
+    return {finite_plate.FORCE_CSV: finite_plate.force_csv()}
+
+
+def _finite_plate_same(rel: str, old: str, new: str) -> list[str]:
+    from .report import finite_plate
+
+    return finite_plate.compare_csv(rel, old, new)
+
+
+def _finite_plate_write(root: Path | None, texts: Texts) -> list[Path]:
+    from .report import finite_plate
+
+    paths = (locate(root, finite_plate.FORCE_CSV), locate(root, finite_plate.FORCE_CHART),
+             locate(root, finite_plate.REGIME_CHART))
+    return finite_plate.write_charts(paths, texts[finite_plate.FORCE_CSV])
+
+
 def _lammps(study: _lammps_publish.Study) -> Artefact:
     """The artefact of a LAMMPS study (runs LAMMPS): its files, texts and chart as
     :mod:`zener_sym.bench.lammps.publish` describes them (one with a chart draws it too)."""
@@ -431,6 +463,15 @@ ARTEFACTS: tuple[Artefact, ...] = (
     Artefact("envelopes", "measured error envelopes that select_model reads",
              ("src/zener_sym/data/envelopes.json",), _envelopes_fresh, _envelopes_same,
              needs_checkout=False, alias="envelopes"),
+    Artefact("plate-criterion", "the finite-plate model against Zener's on a (lambda, beta) "
+             "grid: the criterion Scene.result chooses by",
+             ("src/zener_sym/data/plate_criterion.json",), _plate_criterion_fresh,
+             _plate_criterion_same, needs_checkout=False),
+    Artefact("finite-plate-figures", "the finite plate's force history beside Zener's (data "
+             "and chart) and the regime map from the criterion table (docs/finite_plates.md)",
+             ("docs/data/finite_plate_force.csv", "docs/figures/finite_plate_force.png",
+              "docs/figures/finite_plate_regime.png"), _finite_plate_fresh, _finite_plate_same,
+             write=_finite_plate_write),
     Artefact("bench-reference", "the benchmark's mpmath reference",
              ("src/zener_sym/data/bench_reference.json",), _bench_reference_fresh,
              _bench_reference_same, needs_checkout=False, alias="bench --build-reference"),

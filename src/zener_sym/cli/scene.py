@@ -2,11 +2,12 @@
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import sys
 import warnings
 from pathlib import Path
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING, Any, cast
 
 from ..scene.checks import ZenerWarning
 from ..scene.materials import PRESETS, Material
@@ -27,6 +28,13 @@ def _number(text: str, field: str) -> float:
         return float(text)
     except ValueError:
         raise ValueError(f"{field}: {text!r} is not a number") from None
+
+
+def _count(text: str, field: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise ValueError(f"{field}: {text!r} is not a whole number") from None
 
 
 def _material(spec: str, which: str, yield_text: str | None) -> Material:
@@ -84,6 +92,18 @@ def plot_force(result: SceneResult, out: str, n: int = 400) -> str:
     return out
 
 
+def _lengths(text: str | None, option: str) -> tuple[str, str] | None:
+    """'A,B' of an option such as --plate-size: two lengths, each with its unit."""
+    if text is None:
+        return None
+    parts = [p.strip() for p in text.split(",")]
+    if len(parts) != 2 or not all(parts):
+        raise ValueError(f"{option} {text}: give two lengths with units, e.g. 100mm,50mm")
+    si_value(parts[0], "length", option)  # a missing unit is named with the option
+    si_value(parts[1], "length", option)
+    return (parts[0], parts[1])
+
+
 def scene_from_args(args: argparse.Namespace) -> Scene:
     """The Scene the scene options describe (ValueError naming the option that is wrong)."""
     from ..scene.scene import Scene
@@ -104,7 +124,24 @@ def scene_from_args(args: argparse.Namespace) -> Scene:
                      si_value(args.drop_height, "length", "--drop-height")),
         plate_radius=(None if args.plate_radius is None else
                       si_value(args.plate_radius, "length", "--plate-radius")),
+        plate_size=_lengths(args.plate_size, "--plate-size"),
+        impact_at=_impact_lengths(args.impact_at),
+        support=args.support,
+        plate_loss=0.0 if args.plate_loss is None else _number(args.plate_loss, "--plate-loss"),
     )
+
+
+def _impact_lengths(text: str | None) -> tuple[str, str] | None:
+    """--impact-at X,Y: lengths with units, zero allowed (refused by the scene as on the edge)."""
+    if text is None:
+        return None
+    parts = [p.strip() for p in text.split(",")]
+    if len(parts) != 2 or not all(parts):
+        raise ValueError(f"--impact-at {text}: give two lengths with units from the plate's "
+                         "corner, e.g. 30mm,25mm")
+    for part in parts:
+        si_value(part, "length", "--impact-at", positive=False)
+    return (parts[0], parts[1])
 
 
 def run(args: argparse.Namespace, out: Out = print) -> int:
@@ -113,14 +150,22 @@ def run(args: argparse.Namespace, out: Out = print) -> int:
     try:
         plot = None if args.plot is None else _plot_path(args.plot)
         scene = scene_from_args(args)
+        options: dict[str, Any] = ({} if args.n_modes is None else
+                                   {"n_modes": _count(args.n_modes, "--n-modes")})
+        if options and args.model != "finite-plate":
+            raise ValueError("--n-modes goes with --model finite-plate")
         with warnings.catch_warnings():
             # listed in the table; not printed twice
             warnings.simplefilter("ignore", ZenerWarning)
-            res = scene.result(model=args.model, rtol=args.rtol, quantity=args.quantity)
+            res = scene.result(model=args.model, rtol=args.rtol, quantity=args.quantity,
+                               **options)
     except ValueError as exc:
         print(f"zener-sym scene: error: {exc}", file=sys.stderr)
         return 2
-    out(res.to_markdown() if args.markdown else str(res))
+    if args.json:
+        out(json.dumps(res.as_dict()))
+    else:
+        out(res.to_markdown() if args.markdown else str(res))
     if plot:
         out(f"plot: {plot_force(res, plot)}")
     return 0
@@ -150,7 +195,19 @@ def add_scene_arguments(p: argparse.ArgumentParser, required: bool = True) -> No
     speed.add_argument("--drop-height", default=None,
                        help="instead of --v0: drop height from rest, e.g. 0.5m "
                             "(v0 = sqrt(2 g h), g = 9.80665 m/s^2)")
-    p.add_argument("--plate-radius", default=None, help="radius of a finite plate, e.g. 150mm")
+    # checked by the Scene (one line and exit 2), not by argparse (usage text)
+    p.add_argument("--plate-radius", default=None,
+                   help="radius of a circular plate struck at its centre, e.g. 150mm")
+    p.add_argument("--plate-size", default=None, metavar="A,B",
+                   help="sides of a rectangular plate (or --plate-radius), e.g. 100mm,50mm")
+    p.add_argument("--impact-at", default=None, metavar="X,Y",
+                   help="impact point on the rectangle from a corner (default its centre), "
+                        "e.g. 30mm,25mm")
+    p.add_argument("--support", default=None, metavar="clamped|simply-supported",
+                   help="how the plate is held at its edge (no default: without it the answer "
+                        "is Zener's infinite plate, with a warning when that is off)")
+    p.add_argument("--plate-loss", default=None,
+                   help="modal loss factor of the bounded plate, 0 <= loss < 1 (default 0)")
     p.add_argument("--sphere-yield", default=None, help="sphere yield strength, e.g. 1.5GPa")
     p.add_argument("--plate-yield", default=None, help="plate yield strength, e.g. 250MPa")
 
@@ -164,7 +221,13 @@ def add_parser(sub: Subparsers) -> None:
     p.add_argument("--quantity", default="all",
                    help="quantity the accuracy is for (default all reported quantities)")
     p.add_argument("--model", default=None, help="force a model instead of choosing one")
+    p.add_argument("--n-modes", default=None,
+                   help="with --model finite-plate: the number of plate modes (default: chosen "
+                        "for the accuracy)")
     p.add_argument("--markdown", action="store_true", help="print the table as markdown")
+    p.add_argument("--json", action="store_true",
+                   help="print one JSON object: model, lam, e, contacts (start_s, end_s, "
+                        "max_force_N, impulse_N_s, speed_after_m_s), ...")
     p.add_argument("--plot", default=None, metavar="OUT.png",
                    help="plot F(t) of the chosen model against exact (png, pdf or svg; needs "
                         "matplotlib)")

@@ -8,6 +8,7 @@ from . import pulses  # noqa: F401  (registers "hertz", "hunter", "reed", "onewa
 from . import linear  # noqa: F401  (registers "linear", "raman")
 from . import fits  # noqa: F401  (registers "fits")
 from . import series  # noqa: F401  (registers "series")
+from . import finite_plate  # noqa: F401  (registers "finite-plate")
 
 __all__ = ["Model", "REGISTRY", "register", "get_model", "SUMMARY_FIELDS", "HISTORY_FIELDS",
            "FieldUnavailableError", "FieldValues", "computed_bound"]

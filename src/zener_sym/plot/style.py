@@ -52,6 +52,8 @@ MODEL_STYLES: dict[str, tuple[str, str, str | tuple[int, tuple[float, ...]], str
     "fits": (_OI["wine"], "*", (0, (4, 1, 1, 1)), "paper's fit (Eqs. 24, 55, 70, 80)"),
     "ham": ("#332288", "p", (0, (3, 1)), "HAM series, order $M$"),
     "series": ("#DDCC77", "H", (0, (3, 1, 1, 1)), r"$\lambda$-series / asymptotics"),
+    # the sphere on a bounded plate, every contact (docs/finite_plates.md)
+    "finite-plate": ("#117733", "o", "-", "finite plate (modes, every contact)"),
     # not a model: LAMMPS's hertz/material + viscoelastic contact, integrated (docs/lammps.md)
     "lammps": ("#CC6677", "8", (0, (5, 1, 1, 1)), "LAMMPS (hertz/material, viscoelastic)"),
     # not a model: the small-lambda form of the loss, Eq. (77), drawn in Fig. 14

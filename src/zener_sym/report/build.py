@@ -47,6 +47,12 @@ def scene_section(out_dir: Path) -> str:
     )
 
 
+def _finite_plate_section(out_dir: Path) -> str:
+    from .finite_plate import section
+
+    return section(out_dir)
+
+
 def _exact_fast_section(out_dir: Path) -> str:
     from .exact_fast import section
 
@@ -152,6 +158,7 @@ SECTIONS: list[tuple[str, Section]] = [
     ("audit", _audit_section),
     ("model comparison", model_comparison_section),
     ("scene", scene_section),
+    ("finite plates", _finite_plate_section),
     ("exact-fast", _exact_fast_section),
     ("lammps", lammps_section),
     ("bench", bench_section),

@@ -28,9 +28,10 @@ from ..typing import FloatArray, RealArrayLike
 from . import checks, scaling
 from .checks import ZenerWarning
 from .materials import Material, get_material
+from .plate_geometry import PlateGeometry, check_loss, plate_geometry
 from .units import si_value
 
-__all__ = ["Scene", "SceneResult", "SCENE_FIELDS"]
+__all__ = ["Scene", "SceneResult", "Contact", "SCENE_FIELDS"]
 
 #: Standard gravity [m/s^2] (CGPM 1901), for ``drop_height``: v0 = sqrt(2 g h).
 G_STANDARD = 9.80665
@@ -74,22 +75,35 @@ class Scene:
     v0 : float or str, optional
         Impact speed V0: m/s, or a string with a unit (``"3 m/s"``).
     plate_radius : float or str, optional
-        Radius of a finite plate (metres or with a unit); enables the finite-plate check.
+        Radius b of a circular plate struck at its centre (metres or with a unit).
     drop_height : float or str, optional
         Instead of ``v0``: the height the sphere falls from rest, v0 = sqrt(2 g h) with
         g = 9.80665 m/s^2 (no air drag). Give exactly one of ``v0`` and ``drop_height``.
+    plate_size : pair of float or str, optional
+        Instead of ``plate_radius``: the sides (a, b) of a rectangular plate.
+    impact_at : pair of float or str, optional
+        The rectangle's impact point (x, y) from a corner (default the centre).
+    support : {"clamped", "simply-supported"}, optional
+        How the bounded plate is held at its edge (the rectangle: ``"simply-supported"``).
+        There is no default: without it the answer is Zener's, with a ``finite-plate``
+        warning when the criterion finds Zener off by more than rtol for any support.
+    plate_loss : float, optional
+        Modal loss factor of the bounded plate, 0 <= loss < 1 (default 0, undamped).
 
     Raises
     ------
     ValueError
         For an unknown material, a string without a unit, a value that is not finite and > 0 or
         outside the plausible range of ``zener_sym.scene.units.PLAUSIBLE``, both or neither of
-        ``v0`` and ``drop_height``, or a plate radius not larger than the sphere's.
+        ``v0`` and ``drop_height``, a plate not larger than the sphere, an unknown support, an
+        impact point outside the plate, or a loss factor outside [0, 1).
 
     Notes
     -----
     The reduced mass is m* = m1: Zener's plate is infinite and its inertia is carried by the
-    admittance alpha (see ``zener_sym.scene.scaling``).
+    admittance alpha (see ``zener_sym.scene.scaling``). A bounded plate with its support is
+    solved by the ``finite-plate`` model when Zener's infinite plate does not meet the
+    accuracy asked for (:mod:`zener_sym.scene.plate_criterion`, docs/finite_plates.md).
 
     Examples
     --------
@@ -105,7 +119,10 @@ class Scene:
     def __init__(self, sphere: Material | str, plate: Material | str, radius: float | str,
                  thickness: float | str, v0: float | str | None = None,
                  plate_radius: float | str | None = None, *,
-                 drop_height: float | str | None = None) -> None:
+                 drop_height: float | str | None = None,
+                 plate_size: tuple[float | str, float | str] | None = None,
+                 impact_at: tuple[float | str, float | str] | None = None,
+                 support: str | None = None, plate_loss: float = 0.0) -> None:
         self.sphere: Material = get_material(sphere)
         self.plate: Material = get_material(plate)
         self.radius: float = si_value(radius, "length", "radius")
@@ -122,11 +139,12 @@ class Scene:
         else:
             self.drop_height = None
             self.v0 = si_value(cast("float | str", v0), "speed", "v0")
-        self.plate_radius: float | None = (None if plate_radius is None else
-                             si_value(plate_radius, "length", "plate_radius"))
-        if self.plate_radius is not None and self.plate_radius <= self.radius:
-            raise ValueError(f"plate_radius must exceed the sphere radius {self.radius:g} m, got "
-                             f"{self.plate_radius:g} m")
+        #: The bounded plate (None: Zener's infinite plate).
+        self.geometry: PlateGeometry | None = plate_geometry(self.radius, plate_radius,
+                                                             plate_size, impact_at, support)
+        self.plate_radius: float | None = (self.geometry.size[0] if self.geometry is not None
+                                           and self.geometry.shape == "circle" else None)
+        self.plate_loss: float = check_loss(plate_loss)
         if not math.isfinite(self.lam):
             raise ValueError(f"this scene gives a non-finite lambda ({self.lam!r}): check the "
                              "sizes, speed and materials")
@@ -347,9 +365,124 @@ class Scene:
         return checks.static_checks(self)
 
     def __repr__(self) -> str:
-        pr = "" if self.plate_radius is None else f", plate_radius={self.plate_radius!r}"
+        g = self.geometry
+        pr = "" if g is None else (f", plate_radius={g.size[0]!r}" if g.shape == "circle" else
+                                   f", plate_size={g.size!r}, impact_at={g.impact_at!r}")
+        if g is not None and g.support is not None:
+            pr += f", support={g.support!r}"
         return (f"Scene(sphere={self.sphere.name!r}, plate={self.plate.name!r}, "
                 f"radius={self.radius!r}, thickness={self.thickness!r}, v0={self.v0!r}{pr})")
+
+    # -- the bounded plate ------------------------------------------------------------------
+    @property
+    def beta(self) -> float | None:
+        """The plate-size parameter beta = T sqrt(D/(rho2 H)) / L^2 of a bounded plate (None for
+        Zener's infinite plate); :mod:`zener_sym.scene.plate_geometry`.
+
+        Returns
+        -------
+        float or None
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="2.5 mm", thickness="1 mm", v0="1 m/s",
+        ...               plate_radius="50 mm", support="clamped")
+        >>> round(sc.beta, 6), round(sc.lam, 4)
+        (0.004531, 2.2678)
+        """
+        if self.geometry is None:
+            return None
+        return self.geometry.beta(self.T, self.D, self.plate.rho, self.thickness)
+
+    def plate_options(self) -> dict[str, Any]:
+        """The ``finite-plate`` model's options for this scene's bounded plate.
+
+        Returns
+        -------
+        dict
+            beta, shape, support, aspect, impact, nu (the plate's Poisson ratio) and loss.
+
+        Raises
+        ------
+        ValueError
+            When the scene has no bounded plate, or no support for it.
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "steel", radius="5 mm", thickness="2 mm", v0="1 m/s",
+        ...               plate_size=("50 mm", "50 mm"), support="simply-supported")
+        >>> o = sc.plate_options()
+        >>> o["shape"], o["aspect"], o["impact"], o["nu"]
+        ('rectangle', 1.0, (0.5, 0.5), 0.3)
+        """
+        g = self.geometry
+        if g is None or g.support is None:
+            raise ValueError("model 'finite-plate' needs the plate's size and support: give "
+                             "plate_radius or plate_size, and support='clamped' or "
+                             "'simply-supported'")
+        return {"beta": self.beta, **g.options(self.plate.nu), "loss": self.plate_loss}
+
+    def plate_verdict(self, quantity: str = "all", rtol: float = 1e-3) -> Any:
+        """The finite-plate criterion's verdict on Zener's infinite plate (None without a
+        bounded plate); :func:`zener_sym.scene.plate_criterion.judge`. Without a support, every
+        support is judged; a rectangle is judged through its nearest edge.
+
+        Parameters
+        ----------
+        quantity : str
+            The quantity the accuracy is for (histories: every quantity).
+        rtol : float
+            The accuracy asked for.
+
+        Returns
+        -------
+        zener_sym.scene.plate_criterion.Verdict or None
+
+        Examples
+        --------
+        >>> import zener_sym as zs
+        >>> sc = zs.Scene("steel", "glass", radius="2.5 mm", thickness="1 mm", v0="1 m/s",
+        ...               plate_radius="50 mm")
+        >>> v = sc.plate_verdict(rtol=1e-3)           # no support given: both are judged
+        >>> v.holds, v.supports
+        (False, ('clamped', 'simply-supported'))
+        """
+        from . import plate_criterion as crit
+        from .plate_geometry import SUPPORTS
+
+        g = self.geometry
+        if g is None:
+            return None
+        q = quantity if quantity in crit.KNOWN else "all"
+        if g.shape == "circle":
+            supports = (g.support,) if g.support else SUPPORTS
+            return crit.judge(self.lam, cast(float, self.beta), supports, q, rtol)
+        beta_eq = cast(float, self.beta) * (g.L / g.edge_distance) ** 2
+        return crit.judge(self.lam, beta_eq, ("simply-supported",), q, rtol, shape="rectangle")
+
+    def _plate_warning(self, verdict: Any) -> str:
+        g = cast(PlateGeometry, self.geometry)
+        tail = ("give support= for the finite-plate answer" if g.support is None else
+                "model 'finite-plate' solves it")
+        return f"{g.describe()}: {verdict.reason}; {tail}"
+
+    def _contacts(self, res: SceneResult) -> list[Contact]:
+        """One row per contact: Zener's one contact, or the finite plate's every contact."""
+        m, v0, T, Fs = self.m_star, self.v0, self.T, self.force_scale
+        if res.model == "finite-plate":
+            from ..models.finite_plate import impact
+
+            rows = impact(self.lam, **res.options).contacts
+            return [Contact(c.start * T, c.end * T, c.max_force * Fs, c.impulse * m * v0,
+                            c.speed_after * v0) for c in rows]
+        if None in (res.contact_duration_s, res.max_force_N, res.e):
+            return []
+        s = res.summary
+        impulse = float(s.impulse) if "impulse" in s.fields else 1.0 + float(s.e)
+        return [Contact(0.0, cast(float, res.contact_duration_s), cast(float, res.max_force_N),
+                        impulse * m * v0, float(s.e) * v0)]
 
     # -- results ----------------------------------------------------------------------------
     def summary(self, model: str | None = None, rtol: float = 1e-3, quantity: str = "all",
@@ -441,11 +574,22 @@ class Scene:
         from ..api import summary as _summary
         from .select import select_model
 
+        # the criterion: to choose, or to warn about Zener's answer
+        verdict = None if model == "finite-plate" else self.plate_verdict(quantity, rtol)
         if model is None:
-            sel = select_model(self, quantity, rtol)
-            model, reason = sel.model, sel.reason
+            if verdict is not None and not verdict.holds and self.geometry is not None \
+                    and self.geometry.support is not None:
+                model, reason = "finite-plate", verdict.reason
+            else:
+                sel = select_model(self, quantity, rtol)
+                model, reason = sel.model, sel.reason
+                if verdict is not None and verdict.holds:
+                    reason += "; " + verdict.reason
         else:
             reason = f"model {model!r} requested"
+        if model == "finite-plate":
+            # the solver a decade finer than the accuracy asked of the answer
+            options = {**self.plate_options(), "rtol": min(0.1 * rtol, 1e-5), **options}
         s = _summary(self.lam, model=model, **options)
         T, L = self.T, self.length_scale
         # A model that cannot give a quantity leaves it None (shown as n/a); asking the
@@ -460,21 +604,56 @@ class Scene:
             contact_duration_s=get("tau_d", T), max_force_N=get("F_m", self.force_scale),
             max_compression_m=get("delta_m", L), e=get("e"), xi=get("xi"), eta=get("eta"),
             rebound_speed_m_s=get("e", self.v0),
-            final_deflection_m=get("impulse", self.alpha * self.m_star * self.v0),
+            # w = alpha I: the infinite plate's (the bounded plate rings on after contact)
+            final_deflection_m=(None if model == "finite-plate" else
+                                get("impulse", self.alpha * self.m_star * self.v0)),
             options=dict(options),
         )
+        res.contacts = self._contacts(res)
         found = checks.static_checks(self)
         t_d, d_m, F_m = res.contact_duration_s, res.max_compression_m, res.max_force_N
-        if t_d is None or d_m is None or F_m is None or res.final_deflection_m is None:
+        if t_d is None or d_m is None or F_m is None or "impulse" not in have:
             found.append(("not-checked", f"model {model!r} does not give every quantity the "
                           "plate and yield checks need; they were skipped"))
         else:
             found += checks.dynamic_checks(self, t_d, d_m, F_m, float(s.impulse))
+        if verdict is not None and not verdict.holds and model != "finite-plate":
+            found.append(("finite-plate", self._plate_warning(verdict)))
         res.warnings = found
         if warn:
             for code, msg in found:
                 warnings.warn(f"[{code}] {msg}", ZenerWarning, stacklevel=2)
         return res
+
+
+@dataclass(frozen=True)
+class Contact:
+    """One contact of the ball with the plate, in SI units.
+
+    Attributes
+    ----------
+    start_s, end_s : float
+        When it starts and ends [s], from the first touch.
+    max_force_N : float
+        Its largest force [N].
+    impulse_N_s : float
+        The impulse the plate gives the ball during it [N s].
+    speed_after_m_s : float
+        The ball's speed after it [m/s], positive away from the plate.
+
+    Examples
+    --------
+    >>> import zener_sym as zs
+    >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
+    >>> [c.speed_after_m_s == r.rebound_speed_m_s for c in r.contacts]   # Zener: one contact
+    [True]
+    """
+
+    start_s: float
+    end_s: float
+    max_force_N: float
+    impulse_N_s: float
+    speed_after_m_s: float
 
 
 @dataclass
@@ -510,6 +689,9 @@ class SceneResult:
         The model options used.
     warnings : list of (str, str)
         The validity checks as (code, message) pairs.
+    contacts : list of Contact
+        One row per contact (Zener's model: one; ``finite-plate``: every contact, ``e`` being
+        the ball's after the last).
 
     A field the model cannot give is None (a model chosen by ``select_model`` with quantity
     "all" gives them all).
@@ -539,6 +721,7 @@ class SceneResult:
     final_deflection_m: float | None
     options: dict[str, Any] = field(default_factory=dict)
     warnings: list[tuple[str, str]] = field(default_factory=list)
+    contacts: list[Contact] = field(default_factory=list)
 
     def __getattr__(self, name: str) -> Any:
         if name in RENAMED:
@@ -561,8 +744,9 @@ class SceneResult:
         Returns
         -------
         dict of str to numpy.ndarray
-            ``t_s``, ``force_N``, ``deflection_m`` (plate centre), ``velocity_m_s`` (sphere,
-            positive towards the plate) and ``compression_m``, each of the shape of ``t``.
+            ``t_s``, ``force_N``, ``deflection_m`` (plate centre; not for ``finite-plate``),
+            ``velocity_m_s`` (sphere, positive towards the plate) and ``compression_m``, each of
+            the shape of ``t``.
 
         Raises
         ------
@@ -588,13 +772,17 @@ class SceneResult:
         name = model or self.model
         h = _history(self.lam, ts / sc.T, model=name,
                      **(self.options if name == self.model else {}))
-        return {
+        out = {
             "t_s": ts,
             "force_N": sc.force_scale * h.force,
             "deflection_m": sc.alpha * sc.m_star * sc.v0 * h.impulse,
             "velocity_m_s": sc.v0 * (1.0 - sc.m_star / sc.m1 * h.impulse),
             "compression_m": sc.length_scale * h.delta,
         }
+        if name == "finite-plate":
+            # w = alpha I is the infinite plate's; the bounded plate rings (not reported)
+            del out["deflection_m"]
+        return out
 
     def force(self, t: RealArrayLike) -> FloatArray:
         """Contact force F(t) [N] (Eq. 45) at times ``t`` [s], with the result's model.
@@ -632,6 +820,12 @@ class SceneResult:
         numpy.ndarray
             w [m], positive in the direction of the impact, of the shape of ``t``.
 
+        Raises
+        ------
+        ValueError
+            For a bad time, or the ``finite-plate`` model (its ringing plate's deflection is
+            not reported).
+
         Examples
         --------
         >>> import zener_sym as zs
@@ -640,7 +834,11 @@ class SceneResult:
         >>> round(w_end / r.final_deflection_m, 9)
         1.0
         """
-        return self.history(t)["deflection_m"]
+        h = self.history(t)
+        if "deflection_m" not in h:
+            raise ValueError("the finite plate's deflection history is not reported (its "
+                             "modes ring between contacts); force, velocity and compression are")
+        return h["deflection_m"]
 
     def velocity(self, t: RealArrayLike) -> FloatArray:
         """Sphere velocity V(t) [m/s] (Eq. 64), positive towards the plate, at ``t`` [s].
@@ -694,9 +892,11 @@ class SceneResult:
             ("alpha", f"{sc.alpha:.6g}", "s/kg"), ("V_W", f"{sc.V_W:.6g}", "m/s"),
             ("T", f"{sc.T:.6g}", "s"), ("chi", f"{sc.chi:.6g}", "(s/m)^(1/5)"),
             ("lambda", f"{self.lam:.6g}", "-"),
-            ("model", self.model, ""),
-            ("why this model", self.reason, ""),
         ]
+        if sc.geometry is not None:
+            rows += [("bounded plate", sc.geometry.describe(), ""),
+                     ("beta (plate size)", f"{sc.beta:.6g}", "-")]
+        rows += [("model", self.model, ""), ("why this model", self.reason, "")]
         for name, unit, desc in SCENE_FIELDS:
             v = getattr(self, name)
             rows.append((desc, f"n/a (not given by model {self.model!r})" if v is None
@@ -705,9 +905,44 @@ class SceneResult:
             rows.append(("note", f"model {self.model!r} is approximate: its xi = 2I - I^2 "
                          f"(Eq. 69) differs from 1 - e^2 = {1 - self.e**2:.6g}; the exact "
                          "identity I(t_d) = 1 + e does not hold for it", ""))
+        if len(self.contacts) > 1:
+            for k, c in enumerate(self.contacts, 1):
+                rows.append((f"contact {k}", f"{c.start_s * 1e6:.6g} to {c.end_s * 1e6:.6g} us, "
+                             f"max force {c.max_force_N:.4g} N, impulse {c.impulse_N_s:.4g} N s, "
+                             f"ball speed after {c.speed_after_m_s:.4g} m/s", ""))
         for code, msg in self.warnings:
             rows.append((f"WARNING {code}", msg, ""))
         return rows
+
+    def as_dict(self) -> dict[str, Any]:
+        """The result as plain data (what ``zener-sym scene --json`` prints).
+
+        Returns
+        -------
+        dict
+            ``model``, ``reason``, ``lam``, ``beta`` (None for Zener's infinite plate), every
+            field of :data:`SCENE_FIELDS` (None where the model gives none), ``contacts`` (a
+            list of dicts with the fields of :class:`Contact`) and ``warnings`` (a list of
+            {code, message}).
+
+        Examples
+        --------
+        >>> import json, zener_sym as zs
+        >>> r = zs.Scene("steel", "glass", radius="1 mm", thickness="2 mm", v0="1 m/s").result()
+        >>> d = r.as_dict()
+        >>> d["model"], len(d["contacts"]), round(d["contacts"][0]["end_s"] * 1e6, 3)
+        ('exact', 1, 9.294)
+        >>> json.loads(json.dumps(d)) == d
+        True
+        """
+        import dataclasses
+
+        out: dict[str, Any] = {"model": self.model, "reason": self.reason, "lam": self.lam,
+                               "beta": self.scene.beta}
+        out.update({name: getattr(self, name) for name, _, _ in SCENE_FIELDS})
+        out["contacts"] = [dataclasses.asdict(c) for c in self.contacts]
+        out["warnings"] = [{"code": c, "message": m} for c, m in self.warnings]
+        return out
 
     def to_markdown(self) -> str:
         """:meth:`table` as a markdown table (quantity, value, unit).

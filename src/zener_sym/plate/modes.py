@@ -233,7 +233,7 @@ def _rectangle(n: int, s: float, xi: float, eta: float) -> tuple[FloatArray, Flo
     Omega = F.NUMPY.Omega_rect(mm, kk, s)
     order = np.lexsort((kk, mm, Omega))[:n]  # ties (a square's m <-> k) in a fixed order
     if order.size < n:  # pragma: no cover - the bound doubles until enough modes are inside
-        raise RuntimeError("rectangle: too few participating modes found")
+        raise RuntimeError("too few participating modes of the rectangle found")
     return Omega[order], F.NUMPY.psi_rect(u[order], v[order])
 
 

@@ -5,9 +5,9 @@ float64 ham1 summary (zener_sym.ham.spectral.summary_numpy); `zener-sym regen --
 rebuilds and compares numerically (the node values come from floating-point root finding and
 quadrature).
 
-Inputs hash: 5ac8aab7d3e68ea1
+Inputs hash: c940baa64b468ac4
 """
-INPUTS_HASH = '5ac8aab7d3e68ea1'
+INPUTS_HASH = 'c940baa64b468ac4'
 #: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)
 LAM_CONT = 2.0304532806603661
 #: the table's description (zener_sym.numerics.cheb_table.TableSpec): per lambda

@@ -134,6 +134,22 @@ def test_rendered_table_reads_back_and_compares():
     assert len(engine.compare(stored, moved)) == 1
 
 
+def _check_history(rows, k, deg, need, lu, ip, xl, atol):
+    """The history (``history_rows``' arrays) on the distinct sorted lambdas ``lu`` (pieces
+    ``ip``, variables ``xl``) at 101 reduced times each, by ``line_coefficients`` and Horner per
+    point, against the closed forms f = exp(-lambda y) and I = sin(lambda y)."""
+    tl = np.polynomial.chebyshev.chebvander(xl, max(r.shape[1] for r in rows if r is not None) - 1)
+    cT = line_coefficients(rows, ip, tl, deg, k)
+    yy = np.linspace(0.0, 1.0, 101)
+    line = np.repeat(np.arange(len(lu)), yy.size)
+    z = np.tile(yy, len(lu)) * k
+    sub = np.minimum(z.astype(np.intp), k - 1)
+    f, i = horner_take_pair(cT[: int(need.max())], line * k + sub, 2.0 * (z - sub) - 1.0)
+    lam_y = lu[line] * np.tile(yy, len(lu))
+    np.testing.assert_allclose(f, np.exp(-lam_y), rtol=0, atol=atol)
+    np.testing.assert_allclose(i, np.sin(lam_y), rtol=0, atol=atol)
+
+
 def test_history_on_sub_pieces():
     """A two-field history on sub-pieces of a reduced time y in [0, 1] (the exact tables'
     layout): built by the engine, evaluated by ``history_rows``, ``line_coefficients`` and Horner
@@ -154,16 +170,7 @@ def test_history_on_sub_pieces():
     tab = SummaryTable(spec.pieces, spec.fields, t["summary"], "history test")
     lu = np.array([0.0, 0.3, 1.0, 2.2, 3.0])  # distinct and sorted: one line each
     _, ip, xl, _ = tab.values(lu)
-    tl = np.polynomial.chebyshev.chebvander(xl, max(r.shape[1] for r in rows) - 1)
-    cT = line_coefficients(rows, ip, tl, deg, k)
-    yy = np.linspace(0.0, 1.0, 101)
-    line = np.repeat(np.arange(len(lu)), yy.size)
-    z = np.tile(yy, len(lu)) * k
-    sub = np.minimum(z.astype(np.intp), k - 1)
-    f, i = horner_take_pair(cT[: int(need.max())], line * k + sub, 2.0 * (z - sub) - 1.0)
-    lam = lu[line]
-    np.testing.assert_allclose(f, np.exp(-lam * np.tile(yy, len(lu))), rtol=0, atol=1e-13)
-    np.testing.assert_allclose(i, np.sin(lam * np.tile(yy, len(lu))), rtol=0, atol=1e-13)
+    _check_history(rows, k, deg, need, lu, ip, xl, 1e-13)
 
 
 @pytest.mark.parametrize("builder, module", [
@@ -226,13 +233,4 @@ def test_a_new_table_with_a_history_is_a_builder_configuration():
     v, ip, xl, _ = tab.values(lu)
     np.testing.assert_allclose(v["g"], _g(lu), rtol=0, atol=1e-12)
     rows, k, deg, need = history_tables(ns["HISTORY"], ("T",), ("f", "I"))["T"]
-    tl = np.polynomial.chebyshev.chebvander(xl, max(r.shape[1] for r in rows) - 1)
-    cT = line_coefficients(rows, ip, tl, deg, k)
-    yy = np.linspace(0.0, 1.0, 101)
-    line = np.repeat(np.arange(len(lu)), yy.size)
-    z = np.tile(yy, len(lu)) * k
-    sub = np.minimum(z.astype(np.intp), k - 1)
-    f, i = horner_take_pair(cT[: int(need.max())], line * k + sub, 2.0 * (z - sub) - 1.0)
-    lam = lu[line]
-    np.testing.assert_allclose(f, np.exp(-lam * np.tile(yy, len(lu))), rtol=0, atol=1e-12)
-    np.testing.assert_allclose(i, np.sin(lam * np.tile(yy, len(lu))), rtol=0, atol=1e-12)
+    _check_history(rows, k, deg, need, lu, ip, xl, 1e-12)

@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 972e89a71de63b8e
+ * Inputs hash: 6abb0764c4073075
  * SymPy version: 1.14.0
  */
 #include <float.h>

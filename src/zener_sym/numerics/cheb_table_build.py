@@ -513,7 +513,7 @@ class TableBuilder:
         out: Tables = {"spec": self.description(), "summary": dict(t["summary"])}
         for key in ("history", "weights"):
             if key in t:
-                out[key] = dict(t[key])  # type: ignore[literal-required]
+                out[key] = dict(t[key])
         return out
 
     def compare(self, stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:

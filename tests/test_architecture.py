@@ -470,6 +470,37 @@ def test_table_modules_repeat_no_block():
     assert not runs, "repeated blocks between the table modules:\n" + "\n".join(runs)
 
 
+#: The table builders: each is one ``numerics.cheb_table_build.TableBuilder`` (``BUILDER``).
+BUILDERS = ("zener_sym.exact.table_build", "zener_sym.exact.force_table_build",
+            "zener_sym.ham.table_build")
+#: What the engine's builder owns: no builder module writes its own.
+BUILDER_METHODS = ("render", "compare", "as_tables", "table_path", "build_tables")
+
+
+def defined_functions(source: str) -> set[str]:
+    """Names of the module-level functions (``def``) of a source text."""
+    return {n.name for n in ast.parse(source).body
+            if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))}
+
+
+def test_builders_are_configurations_of_the_one_builder():
+    """Each table builder module assigns ``BUILDER = engine.TableBuilder(...)`` and writes none
+    of the builder's methods itself (issue 36: build, render, compare and the reading back live
+    in the engine); ``artefacts`` finds the builders by their object, not by a module name."""
+    for m in BUILDERS:
+        text = SOURCES[m]
+        assert re.search(r"^BUILDER = engine\.TableBuilder\(", text, re.M), m
+        own = defined_functions(text) & set(BUILDER_METHODS)
+        assert not own, f"{m} writes its own {sorted(own)}"
+    artefacts = SOURCES["zener_sym.artefacts"]
+    assert not [m for m in BUILDERS if f'"{m}"' in artefacts]
+    assert "import_module(builder_name)" not in artefacts
+
+
+def test_the_builder_checks_can_fail():
+    assert defined_functions("def render(t):\n    pass\nx = 1\n") == {"render"}
+
+
 def test_c_runtime_repeats_no_block_and_has_short_functions():
     text = "\n".join((C_DIR / n).read_text(encoding="utf-8") for n in ("types.c.in",
                                                                         "runtime.c.in"))

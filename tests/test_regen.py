@@ -130,6 +130,22 @@ def test_table_check_compares_the_text_too(tmp_path):
     assert artefacts.text_skeleton(nudged) == artefacts.text_skeleton(text)
 
 
+def _builds(monkeypatch, hb, tables):
+    """Make the ham1 table's builder (``hb.BUILDER``, which ``artefacts`` reads when it runs)
+    build ``tables``, as a machine whose rebuild gives them."""
+    import dataclasses
+
+    from zener_sym.numerics.cheb_table_build import TableBuilder
+
+    class Fixed(TableBuilder):
+        def build(self):
+            return tables
+
+    b = hb.BUILDER
+    monkeypatch.setattr(hb, "BUILDER", Fixed(**{f.name: getattr(b, f.name)
+                                                 for f in dataclasses.fields(b)}))
+
+
 def test_regen_keeps_committed_numbers_that_agree(tmp_path, monkeypatch):
     """``zener-sym regen TABLE`` on a machine whose rebuild differs from the committed numbers
     by rounding (another processor, another libm) writes the committed file byte for byte; a
@@ -144,10 +160,10 @@ def test_regen_keeps_committed_numbers_that_agree(tmp_path, monkeypatch):
         return {**real, "summary": {k: [c * (1.0 + by) for c in v]
                                     for k, v in real["summary"].items()}}
 
-    monkeypatch.setattr(hb, "build_tables", lambda: nudged(1e-13))
+    _builds(monkeypatch, hb, nudged(1e-13))
     assert artefacts.build(art, tmp_path) == []  # nothing written: the committed bytes stay
     assert (tmp_path / rel).read_text(encoding="utf-8") == text
-    monkeypatch.setattr(hb, "build_tables", lambda: nudged(1e-9))
+    _builds(monkeypatch, hb, nudged(1e-9))
     assert artefacts.build(art, tmp_path) == [tmp_path / rel]
     assert (tmp_path / rel).read_text(encoding="utf-8") == hb.render(nudged(1e-9))
     assert artefacts.check(art, tmp_path) == []
@@ -200,7 +216,7 @@ def test_regen_keeps_the_committed_trimming(rebuild, tmp_path, monkeypatch):
     assert len(fresh["summary"][first][0]) == len(stored) + 1
     assert all(len(fresh["summary"][k][p]) == len(committed[k][p]) - 1 for k, p in shortened[:2])
     assert hb.render(fresh) != text  # the rebuild's own text differs from the committed one
-    monkeypatch.setattr(hb, "build_tables", lambda: fresh)
+    _builds(monkeypatch, hb, fresh)
     assert artefacts.check(art, tmp_path) == []
     assert artefacts.build(art, tmp_path) == []
     assert (tmp_path / rel).read_text(encoding="utf-8") == text

@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: ed8e26c299af7e48
+ * Inputs hash: 10ebd66cc0810a7b
  * SymPy version: 1.14.0
  */
 #include <float.h>

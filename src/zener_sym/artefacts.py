@@ -26,6 +26,7 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+from .numerics.cheb_table_build import TableBuilder
 # LAMMPS's studies name their own files (LAMMPS itself is imported only when one runs)
 from .bench.lammps import publish as _lammps_publish
 
@@ -184,30 +185,26 @@ def text_drift(rel: str, old: str, new: str) -> list[str]:
             *[line for line in diff if not line.startswith(("---", "+++"))]]
 
 
-def _table(builder_name: str, what: str) -> tuple[FreshFn, SameFn, WriteFn]:
+def _table(builder: Callable[[], TableBuilder], what: str) -> tuple[FreshFn, SameFn, WriteFn]:
     """fresh/same/write of a Chebyshev table in generated/ (the node values come from
-    floating-point solvers).
+    floating-point solvers), from its builder (``builder()``: imported on first use, the
+    solvers stay unloaded till then).
 
-    ``same``: its numbers within the builder's tolerance (``builder.compare``), its text (the
-    numbers masked: comments, names, layout) equal to a fresh rendering's, and its inputs hash.
-    ``write``: where the committed numbers agree with the rebuild, the table is re-rendered with
-    the committed numbers (a rebuild on another machine, or a change of text, moves no number);
-    else the rebuilt table is written."""
+    ``same``: its numbers within the builder's tolerance (``TableBuilder.compare``), its text
+    (the numbers masked: comments, names, layout) equal to a fresh rendering's, and its inputs
+    hash. ``write``: where the committed numbers agree with the rebuild, the table is re-rendered
+    with the committed numbers (a rebuild on another machine, or a change of text, moves no
+    number); else the rebuilt table is written."""
     # fresh text -> the tables it was rendered from (what builder.compare reads)
     built: dict[str, Any] = {}
 
-    def builder() -> ModuleType:
-        import importlib
-
-        return importlib.import_module(builder_name)
-
     def fresh(root: Path | None) -> Texts:
         b = builder()
-        tables = b.build_tables()
+        tables = b.build()
         text = b.render(tables)
         built.clear()
         built[text] = tables
-        return {f"generated/{b.table_path().name}": text}
+        return {f"generated/{b.file.filename}": text}
 
     def same(rel: str, old: str, new: str) -> list[str]:
         b = builder()
@@ -216,7 +213,7 @@ def _table(builder_name: str, what: str) -> tuple[FreshFn, SameFn, WriteFn]:
             stored = b.as_tables(o)
         except Exception as exc:  # a broken committed file is stale, not a crash
             return [f"{rel} does not load: {type(exc).__name__}: {exc}"]
-        tables = built[new] if new in built else b.build_tables()
+        tables = built[new] if new in built else b.build()
         problems: list[str] = b.compare(stored, tables)
         problems += text_drift(rel, old, new)
         current = _table_module(new)["INPUTS_HASH"]
@@ -237,7 +234,7 @@ def _table(builder_name: str, what: str) -> tuple[FreshFn, SameFn, WriteFn]:
                 except Exception:  # a broken committed file: write the rebuild
                     continue
                 stored = b.as_tables(ns)
-                tables = built[new] if new in built else b.build_tables()
+                tables = built[new] if new in built else b.build()
                 if not b.compare(stored, tables):
                     out[rel] = b.render(stored)
         return _write_texts(root, out)
@@ -431,12 +428,29 @@ def _lammps(study: _lammps_publish.Study) -> Artefact:
                     needs_checkout=study.needs_checkout)
 
 
-_EXACT_FRESH, _EXACT_SAME, _EXACT_WRITE = _table("zener_sym.exact.table_build",
-                                                  "the builder or the solver")
+def _exact_builder() -> TableBuilder:
+    from .exact.table_build import BUILDER
+
+    return BUILDER
+
+
+def _force_builder() -> TableBuilder:
+    from .exact.force_table_build import BUILDER
+
+    return BUILDER
+
+
+def _ham1_builder() -> TableBuilder:
+    from .ham.table_build import BUILDER
+
+    return BUILDER
+
+
+_EXACT_FRESH, _EXACT_SAME, _EXACT_WRITE = _table(_exact_builder, "the builder or the solver")
 _FORCE_FRESH, _FORCE_SAME, _FORCE_WRITE = _table(
-    "zener_sym.exact.force_table_build", "the builder, the solvers or the plate table")
+    _force_builder, "the builder, the solvers or the plate table")
 _HAM1_FRESH, _HAM1_SAME, _HAM1_WRITE = _table(
-    "zener_sym.ham.table_build", "the builder, the ham1 series or the generated ham1 kernels")
+    _ham1_builder, "the builder, the ham1 series or the generated ham1 kernels")
 
 #: Every artefact, in the order ``regen`` builds them (an artefact after those it reads: the
 #: ham1 table hashes the generated kernels, the envelopes use the tables).

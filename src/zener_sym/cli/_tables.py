@@ -9,27 +9,25 @@ from __future__ import annotations
 import importlib
 import sys
 import time
-from collections.abc import Sequence
 from types import ModuleType
 
-from ..codegen import inputs_hash
+from ..codegen import generated_dir, inputs_hash
 from ._checkout import CheckoutError, source_root
 
 
-def run_table(builder: ModuleType, module: str, fields: Sequence[tuple[str, str]], command: str,
-              what: str, check: bool = False) -> int:
+def run_table(builder: ModuleType, module: str, command: str, what: str,
+              check: bool = False) -> int:
     """Build (or with ``check``, verify) the table of ``builder``.
 
     Parameters
     ----------
     builder : module
-        Has ``build_tables()``, ``table_path()``, ``compare(stored, fresh)``,
+        Has ``BUILDER`` (its file's name), ``build_tables()``, ``compare(stored, fresh)``,
         ``input_files()`` (hashed by ``codegen.inputs_hash``), ``render(tables)`` and
-        ``CHECK_RTOL``.
+        ``CHECK_RTOL`` (a table builder module: its ``BUILDER``'s methods).
     module : str
-        The generated module holding the committed table.
-    fields : sequence of (str, str)
-        The module's attributes that ``builder.compare`` reads, as (key, attribute) pairs.
+        The generated module holding the committed table (``builder.compare`` reads its
+        names).
     command : str
         The command's name, for messages (``"exact-table"``).
     what : str
@@ -44,7 +42,7 @@ def run_table(builder: ModuleType, module: str, fields: Sequence[tuple[str, str]
     t0 = time.perf_counter()
     tables = builder.build_tables()
     dt = time.perf_counter() - t0
-    path = builder.table_path()
+    path = generated_dir() / builder.BUILDER.file.filename
     if not check:
         path.write_text(builder.render(tables))
         print(f"wrote {path} (built in {dt:.1f} s)")
@@ -54,8 +52,7 @@ def run_table(builder: ModuleType, module: str, fields: Sequence[tuple[str, str]
     except ImportError:
         print(f"{path} is missing; run `zener-sym {command}`")
         return 1
-    stored = {key: getattr(mod, attr) for key, attr in fields}
-    problems = builder.compare(stored, tables)
+    problems = builder.compare(vars(mod), tables)
     digest = inputs_hash(builder.input_files())
     if mod.INPUTS_HASH != digest:
         problems.append(f"inputs hash {mod.INPUTS_HASH} != current {digest} "

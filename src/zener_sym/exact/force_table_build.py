@@ -39,23 +39,20 @@ exact-force-table`` rebuilds and compares numerically (``CHECK_RTOL``), as for t
 """
 from __future__ import annotations
 
+import dataclasses
 import pathlib
-from collections.abc import Mapping
-from typing import Any
 
 import numpy as np
 
-from ..codegen import inputs_hash
-from ..codegen.tables import table_module
 from ..numerics import cheb_table_build as engine
 from ..numerics.cheb_table import TableSpec
-from ..numerics.cheb_table_build import NodeData, Tables
+from ..numerics.cheb_table_build import NodeData
 from ..typing import FloatArray
 from . import table_build as _tb
 from .force_table_layout import ForceLayout, time_of
 
-__all__ = ["SPEC", "LAYOUT", "build_tables", "render", "compare", "as_tables", "input_files",
-           "table_path"]
+__all__ = ["SPEC", "LAYOUT", "HISTORY", "BUILDER", "sample", "build_tables", "render", "compare",
+           "as_tables", "input_files"]
 
 #: Breakpoints of the lambda pieces (summary and history), [0, 1000].
 LAM_PIECES = (0.0, 0.25, 1.0, 2.0, 3.5, 5.0, 25.0, 150.0, 1000.0)
@@ -138,21 +135,10 @@ def node_data(lam: float, log_piece: bool) -> NodeData:
     return out
 
 
-def build_tables() -> Tables:
-    """All coefficients: the engine's ``build_tables`` with this table's node function.
-
-    Returns
-    -------
-    Tables
-        Summary per piece; history per (time piece, field), per lambda piece, per sub-piece one
-        [time degree, lambda degree] matrix; the history's weights; the spec.
-    """
-    def sample(p: int, lams: FloatArray) -> list[NodeData]:
-        return [node_data(float(x), SPEC.kind_of(LAM_PIECES[p]) == "log") for x in lams]
-
-    return engine.build_tables(SPEC, sample, [(p, k) for p in LAYOUT.TIME_PIECES
-                                                for k in LAYOUT.HISTORY_KEYS],
-                               _tb.HISTORY_TRIM, _tb.history_weight)
+def sample(p: int, lams: FloatArray) -> list[NodeData]:
+    """The builder's node function: per node of lambda piece ``p`` (``lams``) one ``NodeData``
+    from ``force_end.solve`` (the ln-lambda pieces' recovery map without tau_P)."""
+    return [node_data(float(x), SPEC.kind_of(LAM_PIECES[p]) == "log") for x in lams]
 
 
 def input_files() -> list[pathlib.Path]:
@@ -168,80 +154,41 @@ def input_files() -> list[pathlib.Path]:
                                      "force_end.py", "solver.py", "phases.py")] + _tb.engine_files()
 
 
-#: The generated module's own words (its description is SPEC).
-FILE = engine.TableFile(
-    "exact_force_table.py", "exact-force-table",
-    title=("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
-           f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}."),
-    provenance=("Built by zener_sym.exact.force_table_build from scipy {scipy} "
-                f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym regen --check "
-                "exact-force-table` rebuilds and compares numerically."),
-    summary_note="stored series -> one tuple of Chebyshev coefficients per lambda piece",
-    history_note=("#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient "
-                  "matrix", *_tb.HISTORY_NOTE[1:]), quantum=_tb.HISTORY_QUANTUM)
+def digest() -> str:
+    """The table's inputs hash (``codegen.inputs_hash`` of :func:`input_files`)."""
+    from ..codegen import inputs_hash
+
+    return inputs_hash(input_files())
 
 
-def render(tables: Tables | None = None) -> str:
-    """Text of ``generated/exact_force_table.py``.
-
-    Parameters
-    ----------
-    tables : table_build.Tables, optional
-        Built tables (``build_tables``, which is called without them).
-
-    Returns
-    -------
-    str
-        The module's text.
-    """
-    import scipy
-
-    t = build_tables() if tables is None else tables
-    head = ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads it "
+def _layout_lines(spec: TableSpec) -> list[str]:
+    """The file's lines before its description: the time pieces' layout."""
+    return ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads it "
             "back)", *LAYOUT.assignments()]
-    return table_module(*FILE.words(scipy.__version__), inputs_hash(input_files()),
-                        FILE.body(t, SPEC, head))
 
 
-def table_path() -> pathlib.Path:
-    """Where the generated table lives: ``generated/exact_force_table.py``."""
-    from ..codegen import generated_dir
+#: The history: (f, v) of both time pieces, trimmed, weighed and rounded as the plate's.
+HISTORY = dataclasses.replace(
+    _tb.HISTORY, keys=tuple((p, k) for p in LAYOUT.TIME_PIECES for k in LAYOUT.HISTORY_KEYS),
+    note=("#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
+          *_tb.HISTORY_NOTE[1:]))
 
-    return generated_dir() / FILE.filename
+#: The table: ``BUILDER.build()``, ``.render()``, ``.compare()`` (the engine's methods). The
+#: anchor series ``log_tau_p`` is compared on the sqrt(lambda) pieces only (it is 0 on the
+#: others, where a relative difference is 0/0).
+BUILDER = engine.TableBuilder(
+    spec=SPEC,
+    file=engine.TableFile(
+        "exact_force_table.py", "exact-force-table",
+        title=("Chebyshev tables of the force-free end of contact of Eq. (10) (the grains' "
+               f"reading): summary and history for 0 <= lambda <= {LAM_PIECES[-1]:g}."),
+        provenance=("Built by zener_sym.exact.force_table_build from scipy {scipy} "
+                    f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym regen --check "
+                    "exact-force-table` rebuilds and compares numerically."),
+        summary_note="stored series -> one tuple of Chebyshev coefficients per lambda piece"),
+    sample=sample, digest=digest, history=HISTORY, head=_layout_lines,
+    skip={"log_tau_p": [p for p, (kind, _, _) in enumerate(SPEC.pieces) if kind == "log"]})
 
-
-def as_tables(t: Mapping[str, Any]) -> Tables:
-    """A table in any of its forms as the engine's ``Tables`` (``table_build.as_tables`` with
-    this table's description).
-
-    Parameters
-    ----------
-    t : mapping
-        The generated module's names, or ``{"summary": ..., "history": ...}``.
-
-    Returns
-    -------
-    Tables
-    """
-    return _tb.as_tables(t, SPEC)
-
-
-def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
-    """Differences beyond CHECK_RTOL between two tables (``table_build.compare``'s rule).
-
-    The anchor series ``log_tau_p`` is compared on the sqrt(lambda) pieces only (it is 0 on the
-    others, where a relative difference is 0/0).
-
-    Parameters
-    ----------
-    stored, fresh : mapping
-        As for ``table_build.compare``.
-
-    Returns
-    -------
-    list of str
-        Readable lines, one per difference (empty: they agree).
-    """
-    logs = [p for p, (kind, _, _) in enumerate(SPEC.pieces) if kind == "log"]
-    return engine.compare(as_tables(stored), as_tables(fresh),
-                          _tb.HISTORY_TRIM, skip={"log_tau_p": logs})
+# the builder's methods under the names the table commands and tests call
+build_tables, render, compare = BUILDER.build, BUILDER.render, BUILDER.compare
+as_tables = BUILDER.as_tables

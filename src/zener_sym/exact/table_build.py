@@ -57,13 +57,11 @@ from __future__ import annotations
 
 import functools
 import pathlib
-from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..codegen import inputs_hash
-from ..codegen.tables import table_module
 from ..numerics import cheb_table_build as engine
 from ..numerics.cheb_table import TableSpec
 from ..numerics.cheb_table_build import NodeData, Tables
@@ -75,8 +73,8 @@ if TYPE_CHECKING:  # the solver is imported where a table is built (scipy stays 
     from .phases import Leg
     from .solver import ExactSolution
 
-__all__ = ["SPEC", "LAYOUT", "NodeData", "Tables", "build_tables", "render", "compare",
-           "input_files", "table_path", "history_weight"]
+__all__ = ["SPEC", "LAYOUT", "HISTORY", "BUILDER", "NodeData", "Tables", "sample", "build_tables",
+           "render", "compare", "as_tables", "input_files", "history_weight"]
 
 #: (delta, w) of a solution at an array of times.
 HistoryFunction = Callable[[FloatArray], tuple[FloatArray, FloatArray]]
@@ -428,26 +426,26 @@ def history_weight(data: Sequence[NodeData], key: tuple[str, str]) -> FloatArray
     return np.ones(np.shape(data[0][key])[0])
 
 
-def build_tables() -> Tables:
-    """All coefficients: the engine's ``build_tables`` with this table's node function.
+def sample(p: int, lams: FloatArray) -> list[NodeData]:
+    """The nodes' data of lambda piece ``p`` (the builder's node function): the universal orbit
+    on the ln-lambda pieces, a solve per node below.
 
-    history[(piece, key)] holds, per lambda piece up to HISTORY_TO, one 2-D array per sub-piece
-    indexed [time degree, lambda degree].
+    Parameters
+    ----------
+    p : int
+        The lambda piece.
+    lams : ndarray
+        Its nodes.
 
     Returns
     -------
-    Tables
-        summary, history, the history's weights and the spec.
+    list of dict
+        One ``NodeData`` per node.
     """
-    def sample(p: int, lams: FloatArray) -> list[NodeData]:
-        a, b = LAM_PIECES[p], LAM_PIECES[p + 1]
-        if SPEC.kind_of(a) == "log":
-            return [large_node(float(x), history=b <= HISTORY_TO) for x in lams]
-        return [node_data(float(x)) for x in lams]
-
-    return engine.build_tables(SPEC, sample, [(p, k) for p in LAYOUT.TIME_PIECES
-                                                for k in LAYOUT.HISTORY_KEYS],
-                               HISTORY_TRIM, history_weight)
+    a, b = LAM_PIECES[p], LAM_PIECES[p + 1]
+    if SPEC.kind_of(a) == "log":
+        return [large_node(float(x), history=b <= HISTORY_TO) for x in lams]
+    return [node_data(float(x)) for x in lams]
 
 
 def input_files() -> list[pathlib.Path]:
@@ -464,6 +462,13 @@ def input_files() -> list[pathlib.Path]:
                                      "phases.py")] + engine_files()
 
 
+def digest() -> str:
+    """The table's inputs hash (``codegen.inputs_hash`` of :func:`input_files`)."""
+    from ..codegen import inputs_hash
+
+    return inputs_hash(input_files())
+
+
 def engine_files() -> list[pathlib.Path]:
     """The table engine's sources (its fitting, trimming and text), inputs of every table.
 
@@ -476,91 +481,30 @@ def engine_files() -> list[pathlib.Path]:
     return [numerics / "cheb_table.py", numerics / "cheb_table_build.py"]
 
 
-#: The generated module's own words (its description is SPEC).
-FILE = engine.TableFile(
-    "exact_table.py", "exact-table",
-    title=("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
-           f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}."),
-    provenance=("Built by zener_sym.exact.table_build from scipy {scipy} solves at "
-                f"rtol {RTOL:g}; `zener-sym regen --check exact-table` rebuilds and compares "
-                "numerically (the node values come from a floating-point integrator, so the "
-                "bytes are not reproducible across machines)."),
-    history_note=HISTORY_NOTE, quantum=HISTORY_QUANTUM)
-
-
-def render(tables: Tables | None = None) -> str:
-    """Text of ``generated/exact_table.py``.
-
-    Parameters
-    ----------
-    tables : Tables, optional
-        Built tables (``build_tables``, which is called without them), or the committed ones
-        (``numerics.cheb_table_build.stored_tables``: re-rendered with their own numbers).
-
-    Returns
-    -------
-    str
-        The module's text.
-    """
-    import scipy
-
-    t = build_tables() if tables is None else tables
-    head = ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
+def _layout_lines(spec: TableSpec) -> list[str]:
+    """The file's lines before its description: the time pieces' layout."""
+    return ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
             *LAYOUT.assignments()]
-    return table_module(*FILE.words(scipy.__version__), inputs_hash(input_files()),
-                        FILE.body(t, SPEC, head))
 
 
-def table_path() -> pathlib.Path:
-    """Where the generated table lives: ``generated/exact_table.py``."""
-    from ..codegen import generated_dir
+#: The history: both fields of every time piece, trimmed and rounded on the field's scale.
+HISTORY = engine.HistorySettings(
+    keys=tuple((p, k) for p in LAYOUT.TIME_PIECES for k in LAYOUT.HISTORY_KEYS),
+    trim=HISTORY_TRIM, quantum=HISTORY_QUANTUM, weight=history_weight, note=HISTORY_NOTE)
 
-    return generated_dir() / FILE.filename
+#: The table: ``BUILDER.build()``, ``.render()``, ``.compare()`` (the engine's methods).
+BUILDER = engine.TableBuilder(
+    spec=SPEC,
+    file=engine.TableFile(
+        "exact_table.py", "exact-table",
+        title=("Chebyshev tables of the exact solution of Eq. (10): summary for 0 <= lambda <= "
+               f"{LAM_PIECES[-1]:g}, history for 0 <= lambda <= {HISTORY_TO:g}."),
+        provenance=("Built by zener_sym.exact.table_build from scipy {scipy} solves at "
+                    f"rtol {RTOL:g}; `zener-sym regen --check exact-table` rebuilds and compares "
+                    "numerically (the node values come from a floating-point integrator, so the "
+                    "bytes are not reproducible across machines).")),
+    sample=sample, digest=digest, history=HISTORY, head=_layout_lines)
 
-
-def as_tables(t: Mapping[str, Any], spec: TableSpec = SPEC) -> Tables:
-    """A table in any of its forms as the engine's ``Tables``: the generated module's names
-    (SUMMARY, HISTORY and its TABLE_* description), or ``{"summary": ..., "history": ...}``
-    (strings or bare arrays, weights optional), with ``spec`` where it has no description.
-
-    Parameters
-    ----------
-    t : mapping
-        The table.
-    spec : TableSpec
-        The description to assume.
-
-    Returns
-    -------
-    Tables
-    """
-    if "SUMMARY" in t:
-        if "TABLE_PIECES" in t:
-            return engine.stored_tables(t)
-        t = {"summary": t["SUMMARY"], "history": t["HISTORY"]}
-    out: Tables = {"spec": t.get("spec", spec), "summary": dict(t["summary"]),
-                   "history": dict(t["history"])}
-    if "weights" in t:
-        out["weights"] = t["weights"]
-    return out
-
-
-def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
-    """Differences beyond CHECK_RTOL between two tables (the engine's ``compare``; a history
-    change that moves its field by less than HISTORY_TRIM of its scale, the trimming and
-    rounding level, passes too).
-
-    Parameters
-    ----------
-    stored : mapping
-        The generated module's SUMMARY and HISTORY (history as strings), as "summary" and
-        "history" (or ``stored_tables``' form).
-    fresh : mapping
-        Rebuilt tables (``Tables``).
-
-    Returns
-    -------
-    list of str
-        Readable lines, one per difference (empty: they agree).
-    """
-    return engine.compare(as_tables(stored), as_tables(fresh), HISTORY_TRIM)
+# the builder's methods under the names the table commands and tests call
+build_tables, render, compare = BUILDER.build, BUILDER.render, BUILDER.compare
+as_tables = BUILDER.as_tables

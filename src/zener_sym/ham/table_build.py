@@ -36,13 +36,9 @@ to be bit-reproducible across machines: the table is NOT in ``codegen.BUILDERS``
 from __future__ import annotations
 
 import pathlib
-from collections.abc import Mapping
-from typing import Any, cast
 
 import numpy as np
 
-from ..codegen import inputs_hash
-from ..codegen.tables import table_module
 from ..numerics import cheb_table_build as engine
 from ..numerics.cheb_table import TableSpec
 from ..numerics.cheb_table_build import NodeData
@@ -64,10 +60,6 @@ CHECK_RTOL = 1e-12
 KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
 #: Kinds of Chebyshev variable: lambda itself, or sqrt(lambda - start of the piece).
 KINDS = ("lam", "sqrt")
-
-
-#: A built table: the engine's ``Tables`` (summary only) and lam_cont.
-Tables = dict[str, Any]
 
 
 def lam_crit() -> float:
@@ -186,28 +178,34 @@ def piece_nodes(kind: str, a: float, b: float, n: int) -> FloatArray:
     return engine.piece_nodes(kind, a, b, n)
 
 
-def build_tables() -> Tables:
-    """Sample the reference on every piece and fit its Chebyshev coefficients.
+def description() -> TableSpec:
+    """The table's description, its last piece starting at lam_cont found now
+    (:func:`continuation_lambda`).
 
     Returns
     -------
-    Tables
-        The engine's tables ("summary", "spec") and "lam_cont".
-
-    Raises
-    ------
-    RuntimeError
-        The reference gave a non-finite value at a node.
+    TableSpec
     """
-    s = spec(continuation_lambda())
+    return spec(continuation_lambda())
 
-    def sample(p: int, lams: FloatArray) -> list[NodeData]:
-        v = reference(lams)  # vectorised: one call per piece
-        return [{k: float(v[k][j]) for k in KEYS} for j in range(len(lams))]
 
-    t = dict(engine.build_tables(s, sample))
-    t["lam_cont"] = s.pieces[-1][1]
-    return t
+def sample(p: int, lams: FloatArray) -> list[NodeData]:
+    """The nodes' data of a lambda piece: the reference, one vectorised call per piece.
+
+    Parameters
+    ----------
+    p : int
+        The lambda piece (unused: the reference holds on every piece).
+    lams : ndarray
+        Its nodes.
+
+    Returns
+    -------
+    list of dict
+        ``KEYS`` -> value, one per node.
+    """
+    v = reference(lams)
+    return [{k: float(v[k][j]) for k in KEYS} for j in range(len(lams))]
 
 
 def input_files() -> list[pathlib.Path]:
@@ -229,95 +227,34 @@ def input_files() -> list[pathlib.Path]:
     return files
 
 
-#: The generated module's own words (its description: ``spec``).
-FILE = engine.TableFile(
-    "ham1_table.py", "ham1-table",
-    title="Chebyshev tables of the first-order HAM summary (Eq. 42) for 0 <= lambda < lam_crit.",
-    provenance=("Built by zener_sym.ham.table_build from the float64 ham1 summary "
-                "(zener_sym.ham.spectral.summary_numpy); `zener-sym regen --check ham1-table` "
-                "rebuilds and compares numerically (the node values come from floating-point "
-                "root finding and quadrature)."), summary_name="COEF")
+def digest() -> str:
+    """The table's inputs hash (``codegen.inputs_hash`` of :func:`input_files`)."""
+    from ..codegen import inputs_hash
+
+    return inputs_hash(input_files())
 
 
-def render(tables: Tables | None = None) -> str:
-    """Text of ``generated/ham1_table.py``.
-
-    Parameters
-    ----------
-    tables : Tables, optional
-        A built table; default: :func:`build_tables` now.
-
-    Returns
-    -------
-    str
-        The module text, with its do-not-edit header and inputs hash.
-    """
-    t = build_tables() if tables is None else tables
-    sp = cast(TableSpec, t["spec"])
-    head = ["#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
+def _lam_cont_lines(sp: TableSpec) -> list[str]:
+    """The file's lines before its description: lam_cont, the last piece's start."""
+    return ["#: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)",
             f"LAM_CONT = {float(sp.pieces[-1][1]):.17g}"]
-    # the pieces under the name the older readers use, after the summary (the description
-    # comes first)
-    tail = ["#: (kind, start, end) per lambda piece (TABLE_PIECES)", "PIECES = TABLE_PIECES"]
-    return table_module(*FILE.words(), inputs_hash(input_files()),
-                        FILE.body(cast(engine.Tables, t), sp, head, tail))
 
 
-def table_path() -> pathlib.Path:
-    """Where the table module lives: ``generated/ham1_table.py``.
+#: The table: ``BUILDER.build()``, ``.render()``, ``.compare()`` (the engine's methods); the
+#: pieces are written once more, after the summary, under the name older readers use.
+BUILDER = engine.TableBuilder(
+    spec=description,
+    file=engine.TableFile(
+        "ham1_table.py", "ham1-table",
+        title=("Chebyshev tables of the first-order HAM summary (Eq. 42) for 0 <= lambda < "
+               "lam_crit."),
+        provenance=("Built by zener_sym.ham.table_build from the float64 ham1 summary "
+                    "(zener_sym.ham.spectral.summary_numpy); `zener-sym regen --check ham1-table` "
+                    "rebuilds and compares numerically (the node values come from floating-point "
+                    "root finding and quadrature)."), summary_name="COEF"),
+    sample=sample, digest=digest, head=_lam_cont_lines,
+    tail=("#: (kind, start, end) per lambda piece (TABLE_PIECES)", "PIECES = TABLE_PIECES"))
 
-    Returns
-    -------
-    pathlib.Path
-        The file in :func:`zener_sym.codegen.generated_dir`.
-    """
-    from ..codegen import generated_dir
-
-    return generated_dir() / FILE.filename
-
-
-def as_tables(t: Mapping[str, Any]) -> Tables:
-    """A table in any of its forms as the engine's ``Tables``: built (``build_tables``), the
-    generated module's names (COEF and its TABLE_* description, or the older LAM_CONT, PIECES,
-    COEF).
-
-    Parameters
-    ----------
-    t : mapping
-        The table.
-
-    Returns
-    -------
-    Tables
-    """
-    if "spec" in t:
-        return dict(t)
-    if "TABLE_PIECES" in t:
-        return dict(engine.stored_tables(t, "COEF"))
-    pieces = tuple((str(k), float(a), float(b)) for k, a, b in t["PIECES"])
-    nodes = tuple(N_NODES[i] if i < len(N_NODES) else 1 for i in range(len(pieces)))
-    sp = TableSpec(pieces=pieces, fields=KEYS, nodes=nodes, trim=TRIM, check_rtol=CHECK_RTOL,
-                   digits=17)
-    return {"spec": sp, "summary": {k: [np.asarray(c, dtype=float) for c in v]
-                                    for k, v in t["COEF"].items()}}
-
-
-def compare(stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
-    """Differences beyond CHECK_RTOL between two tables, as readable lines (empty: they agree):
-    the engine's ``compare`` (the pieces, lam_cont among their ends, and every series).
-
-    Parameters
-    ----------
-    stored : mapping
-        The committed table (the generated module's LAM_CONT, PIECES, COEF, or the engine's
-        ``stored_tables``).
-    fresh : mapping
-        A table just built (:func:`build_tables`).
-
-    Returns
-    -------
-    list of str
-        One line per difference; empty when they agree.
-    """
-    return engine.compare(cast(engine.Tables, as_tables(stored)),
-                          cast(engine.Tables, as_tables(fresh)))
+# the builder's methods under the names the table commands and tests call
+build_tables, render, compare = BUILDER.build, BUILDER.render, BUILDER.compare
+as_tables = BUILDER.as_tables

@@ -17,6 +17,7 @@ numbers (:func:`stored_tables`) when only its text changes.
 from __future__ import annotations
 
 import dataclasses
+import textwrap
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any, TypedDict
 
@@ -26,10 +27,10 @@ from ..typing import FloatArray
 from .cheb_table import Pieces, TableSpec, parse_array, spec_assignments, spec_of
 from .chebyshev import cheb_coefficients, cheb_nodes, coefficient_difference, trim_trailing
 
-__all__ = ["NodeData", "Tables", "TableFile", "piece_nodes", "sub_nodes", "fit", "build_tables",
-           "history_coefficients", "format_quantised", "render_summary", "render_history",
-           "table_lines",
-           "stored_tables", "compare"]
+__all__ = ["NodeData", "Tables", "TableFile", "HistorySettings", "TableBuilder", "piece_nodes",
+           "sub_nodes", "fit", "build_tables", "history_coefficients", "format_quantised",
+           "render_summary", "render_history", "table_lines", "table_module", "stored_tables",
+           "compare"]
 
 #: One lambda node's data: summary values by name, and per (time piece, field) the history
 #: samples [sub-piece, point] (with (time piece, "delta") the sub-pieces' weights).
@@ -343,10 +344,8 @@ def table_lines(t: Tables, spec: TableSpec, head: Sequence[str], summary_note: s
 
 @dataclasses.dataclass(frozen=True)
 class TableFile:
-    """A generated table module's own words, beside its :class:`~.cheb_table.TableSpec`: where it
-    lives, the command that rebuilds it, what its docstring and comments say (data: each table
-    of the package is one of these, and a builder's ``render`` writes ``table_module(title,
-    command, provenance, digest, body)`` with them).
+    """A generated table module's own words: where it lives, the command that rebuilds it, what
+    its docstring says and the comment above its summary (a :class:`TableBuilder` holds one).
 
     Attributes
     ----------
@@ -358,7 +357,7 @@ class TableFile:
         The first line of its docstring.
     provenance : str
         How its numbers were obtained; ``{scipy}`` stands for scipy's version.
-    summary_note, history_note, quantum, summary_name
+    summary_note, summary_name
         As for :func:`table_lines`.
     """
 
@@ -367,8 +366,6 @@ class TableFile:
     title: str
     provenance: str
     summary_note: str = "field -> one tuple of Chebyshev coefficients per lambda piece"
-    history_note: tuple[str, ...] = ()
-    quantum: float = 0.0
     summary_name: str = "SUMMARY"
 
     @property
@@ -380,11 +377,186 @@ class TableFile:
         """(title, command, provenance) of the module's docstring."""
         return self.title, self.command, self.provenance.format(scipy=scipy_version)
 
-    def body(self, t: Tables, spec: TableSpec, head: Sequence[str],
-             tail: Sequence[str] = ()) -> list[str]:
-        """The module's lines after its inputs hash: ``head``, :func:`table_lines`, ``tail``."""
-        return [*table_lines(t, spec, head, self.summary_note, self.history_note, self.quantum,
-                             self.summary_name), *tail]
+
+#: ``weight(a lambda piece's node data, (time piece, field))``: per sub-piece the scale a
+#: history coefficient moves its field by (``history_coefficients``).
+WeightFunction = Callable[[Sequence[NodeData], tuple[str, str]], FloatArray]
+
+
+@dataclasses.dataclass(frozen=True)
+class HistorySettings:
+    """A table's history in one place: its series, how they are trimmed, weighed, rounded and
+    compared, and the comment above them in the file.
+
+    Attributes
+    ----------
+    keys : tuple of (str, str)
+        The (time piece, field) series, in the order they are built.
+    trim : float
+        ``history_coefficients``' trimming level; a rebuilt coefficient that moves its field by
+        less than this also passes ``compare`` (its floor).
+    quantum : float
+        The written coefficients' rounding level on the field's scale (``render_history``).
+    weight : callable
+        Per sub-piece the scale a coefficient moves its field by (:data:`WeightFunction`).
+    note : tuple of str
+        The comment lines above the history.
+    """
+
+    keys: tuple[tuple[str, str], ...]
+    trim: float
+    quantum: float
+    weight: WeightFunction
+    note: tuple[str, ...] = ()
+
+
+def _no_lines(spec: TableSpec) -> list[str]:
+    return []
+
+
+@dataclasses.dataclass(frozen=True)
+class TableBuilder:
+    """One generated table, offline: its description, its file's words, its node function, its
+    history and its inputs' hash; it builds, renders, reads back and compares the table (each table
+    of the package is one: ``exact.table_build.BUILDER``, ``exact.force_table_build.BUILDER``,
+    ``ham.table_build.BUILDER``; ``artefacts`` and the table commands use only these methods).
+
+    Attributes
+    ----------
+    spec : TableSpec or callable
+        The description, or a function that finds it at build time (ham1's last piece starts at
+        a root found then).
+    file : TableFile
+        The file's words.
+    sample : callable(piece index, lambdas) -> sequence of dict
+        Each node's data (:data:`SampleFunction`).
+    digest : callable() -> str
+        The inputs hash of the sources the table is built from (``codegen.inputs_hash`` of the
+        builder's input files; the engine, a leaf helper, does not import codegen).
+    history : HistorySettings, optional
+        The history (none: a summary-only table).
+    head : callable(spec) -> list of str
+        Lines written before the description (a table's own layout).
+    tail : tuple of str
+        Lines written last.
+    skip : mapping, optional
+        ``compare``'s skip: field -> piece indices whose summary series are not compared.
+    """
+
+    spec: TableSpec | Callable[[], TableSpec]
+    file: TableFile
+    sample: SampleFunction
+    digest: Callable[[], str]
+    history: HistorySettings | None = None
+    head: Callable[[TableSpec], list[str]] = _no_lines
+    tail: tuple[str, ...] = ()
+    skip: Mapping[str, Sequence[int]] | None = None
+
+    def description(self) -> TableSpec:
+        """The table's :class:`~.cheb_table.TableSpec` (found now when ``spec`` is a function)."""
+        return self.spec if isinstance(self.spec, TableSpec) else self.spec()
+
+    def build(self) -> Tables:
+        """Sample every piece and fit the series (:func:`build_tables`).
+
+        Returns
+        -------
+        Tables
+            summary, spec and, with a history, history and weights.
+        """
+        h = self.history
+        if h is None:
+            return build_tables(self.description(), self.sample)
+        return build_tables(self.description(), self.sample, h.keys, h.trim, h.weight)
+
+    def render(self, tables: Mapping[str, Any] | None = None) -> str:
+        """The generated module's text.
+
+        Parameters
+        ----------
+        tables : mapping, optional
+            Built tables, or the committed ones in any form ``as_tables`` reads (re-rendered
+            with their own numbers); default: :meth:`build` now.
+
+        Returns
+        -------
+        str
+        """
+        import scipy
+
+        t = self.build() if tables is None else self.as_tables(tables)
+        spec, h = t["spec"], self.history
+        body = [*table_lines(t, spec, self.head(spec), self.file.summary_note,
+                             h.note if h else (), h.quantum if h else 0.0,
+                             self.file.summary_name), *self.tail]
+        return table_module(*self.file.words(scipy.__version__), self.digest(), body)
+
+    def as_tables(self, t: Mapping[str, Any]) -> Tables:
+        """A table in any of its forms as ``Tables``: already one (it has ``spec``), the
+        generated module's names (with its ``TABLE_*`` description), or ``{"summary": ...,
+        "history": ...}`` (strings or bare arrays, weights optional) with this builder's
+        description.
+
+        Parameters
+        ----------
+        t : mapping
+            The table.
+
+        Returns
+        -------
+        Tables
+        """
+        if "spec" in t:
+            return dict(t)  # type: ignore[return-value]
+        if "TABLE_PIECES" in t:
+            return stored_tables(t, self.file.summary_name)
+        out: Tables = {"spec": self.description(), "summary": dict(t["summary"])}
+        for key in ("history", "weights"):
+            if key in t:
+                out[key] = dict(t[key])
+        return out
+
+    def compare(self, stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
+        """Differences beyond the description's ``check_rtol`` between two tables (any form
+        ``as_tables`` reads): :func:`compare` with the history's floor and ``skip``.
+
+        Returns
+        -------
+        list of str
+            Readable lines, one per difference (empty: they agree).
+        """
+        return compare(self.as_tables(stored), self.as_tables(fresh),
+                       self.history.trim if self.history else 0.0, self.skip)
+
+
+def table_module(title: str, command: str, provenance: str, digest: str,
+                 body: Iterable[str]) -> str:
+    """A generated table module: a docstring (``title``, the do-not-edit line naming
+    ``zener-sym <command>`` with ``provenance`` wrapped after it, the inputs hash), then
+    ``INPUTS_HASH`` and the ``body`` lines.
+
+    Parameters
+    ----------
+    title : str
+        First line of the module docstring.
+    command : str
+        The ``zener-sym`` sub-command that rebuilds the table.
+    provenance : str
+        How the data were obtained (wrapped at 100 columns).
+    digest : str
+        The builder's inputs hash (:func:`zener_sym.codegen.inputs_hash`).
+    body : iterable of str
+        The module's lines after ``INPUTS_HASH``.
+
+    Returns
+    -------
+    str
+        The module text, ending with a newline.
+    """
+    note = textwrap.fill(f"GENERATED by `zener-sym {command}`: DO NOT EDIT. {provenance}", 100)
+    lines = [f'"""{title}', "", note, "", f"Inputs hash: {digest}", '"""',
+             f"INPUTS_HASH = {digest!r}", *body]
+    return "\n".join(lines) + "\n"
 
 
 def stored_tables(ns: Mapping[str, Any], summary_name: str = "SUMMARY") -> Tables:

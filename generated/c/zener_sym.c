@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 10ebd66cc0810a7b
+ * Inputs hash: 558ece8424a1349d
  * SymPy version: 1.14.0
  */
 #include <float.h>

@@ -326,6 +326,33 @@ def _series_sum(tl: FloatArray, coef: FloatArray, i: Index) -> FloatArray:
     return out
 
 
+def _one_series_sum(tl: FloatArray, coef: FloatArray, i: Index) -> FloatArray:
+    """``_series_sum`` of one series: the same products added in the same order (degree 0 first,
+    then left to right, so the same bits), but gathered for every degree at once, [degree,
+    lambda], and added by ``np.add.accumulate`` along the degrees (strictly in order): one
+    field's per-degree gathers cost more than its sums (``lam_from_summary`` calls this in its
+    root finding).
+
+    Parameters
+    ----------
+    tl : ndarray
+        T_k(x) per lambda, [lambda, degree].
+    coef : ndarray
+        The series' coefficients, [degree, piece].
+    i : ndarray of int
+        Each lambda's piece.
+
+    Returns
+    -------
+    ndarray
+        [lambda].
+    """
+    n = min(tl.shape[1], coef.shape[0])
+    prods = coef[:n].take(i, axis=1)
+    prods *= tl[:, :n].T
+    return np.add.accumulate(prods, axis=0, out=prods)[-1].copy()
+
+
 def _basis(x: FloatArray, n: int) -> FloatArray:
     """T_0..T_{n-1} at x, [point, degree], by the three-term recurrence T_k = 2 x T_{k-1} -
     T_{k-2} (numpy's ``chebvander``; for a few points the same operations on Python floats,
@@ -471,8 +498,8 @@ class SummaryTable:
         k = self.fields.index(field)
         i, x = self.locate(lam)
         tl = _basis(x, self.coef.shape[0])
-        val = _series_sum(tl, self.coef[:, :, k:k + 1], i)[:, 0]
-        der = _series_sum(tl, self.dcoef[:, :, k:k + 1], i)[:, 0]
+        val = _one_series_sum(tl, self.coef[:, :, k], i)
+        der = _one_series_sum(tl, self.dcoef[:, :, k], i)
         return val, der * self.pieces.dx_dlam(lam, i)
 
 

@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 558ece8424a1349d
+ * Inputs hash: c3efd8fc34b3ecf4
  * SymPy version: 1.14.0
  */
 #include <float.h>

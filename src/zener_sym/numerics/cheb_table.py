@@ -350,7 +350,8 @@ def _one_series_sum(tl: FloatArray, coef: FloatArray, i: Index) -> FloatArray:
     n = min(tl.shape[1], coef.shape[0])
     prods = coef[:n].take(i, axis=1)
     prods *= tl[:, :n].T
-    return np.add.accumulate(prods, axis=0, out=prods)[-1].copy()
+    out: FloatArray = np.add.accumulate(prods, axis=0, out=prods)[-1].copy()
+    return out
 
 
 def _basis(x: FloatArray, n: int) -> FloatArray:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -117,3 +118,14 @@ def test_rebuilt_cell_matches_the_committed_table():
         new = np.array(part["supports"]["clamped"]["difference"][q][0])
         assert np.all(np.abs(old - new) <= pcb.COMPARE_RTOL * new + 10 * pcb.SOLVER_RTOL), q
     assert part["supports"]["clamped"]["contacts"][0] == table["supports"]["clamped"]["contacts"][9]
+
+
+@pytest.mark.parametrize("lam, beta", [(2.263, 0.00113), (1.0, 3e-3), (0.16, 7e-5)])
+def test_reason_states_the_error_as_a_percentage(lam, beta):
+    """The verdict's sentence gives Zener's estimated error as a plain percentage (a bare "62"
+    said nothing of its unit), whose value is the verdict's own error to two digits."""
+    v = crit.judge(lam, beta, ("clamped", "simply-supported"))
+    m = re.search(r"off by ([0-9.]+) % \(relative\)", v.reason)
+    assert m is not None, v.reason
+    assert "e+" not in v.reason and "e-" not in m.group(1)
+    assert math.isclose(float(m.group(1)), 100.0 * v.error, rel_tol=0.05)

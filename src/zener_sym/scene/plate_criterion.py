@@ -152,6 +152,12 @@ class Verdict:
     reason: str
 
 
+def _percent(x: float) -> str:
+    """x as a percentage with two significant digits, never in exponent form above 10 %."""
+    pct = float(f"{100.0 * x:.2g}")
+    return f"{pct:.0f} %" if pct >= 10.0 else f"{pct:.2g} %"
+
+
 def judge(lam: float, beta: float, supports: tuple[str, ...], quantity: str = "all",
           rtol: float = 1e-3, shape: str = "circle", table: dict[str, Any] | None = None
           ) -> Verdict:
@@ -193,7 +199,9 @@ def judge(lam: float, beta: float, supports: tuple[str, ...], quantity: str = "a
                f"(lambda <= {table['lam'][-1]:g}, beta <= {table['beta'][-1]:g}){eq}: no claim "
                "that Zener's infinite plate holds")
     else:
-        why = (f"the finite-plate criterion{eq} estimates Zener's infinite-plate error at "
-               f"{err:.2g} for the {what} plate (lambda = {lam:.4g}, beta = {beta:.3g}); "
-               f"{SAFETY:g} x that is {'<=' if holds else '>'} rtol {rtol:g}")
+        # a percentage reads at a glance; "error at 62" did not say 62 of what
+        why = (f"the finite-plate criterion{eq} estimates that Zener's infinite plate is off by "
+               f"{_percent(err)} (relative) for the {what} plate (lambda = {lam:.4g}, "
+               f"beta = {beta:.3g}); {SAFETY:g} x that is {'<=' if holds else '>'} rtol "
+               f"{rtol:g}")
     return Verdict(holds, err, tuple(supports), why)

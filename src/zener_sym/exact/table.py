@@ -2,7 +2,7 @@
 
 The tables (``generated/exact_table.py``, built offline by :mod:`zener_sym.exact.table_build` from
 the scipy solver at rtol 1e-13) cover ``LAM_MIN <= lambda <= LAM_MAX`` (0 to 1000) for the
-summary and the history (above ``LOG_FROM`` = 5 in the variable ln lambda, from the universal
+summary and the history (from lambda = 5 on in the variable ln lambda, from the universal
 large-lambda orbit; ``HISTORY_LAM_MAX`` = ``LAM_MAX``). They are never extrapolated:
 :func:`in_range` and :func:`history_in_range` tell the caller which lambda must be integrated.
 
@@ -138,8 +138,8 @@ def summary_derivative(lam: RealArrayLike, field: str = "e",
     """d(field)/d(lambda) of the tabulated summary, from the Chebyshev series themselves.
 
     Each stored series is differentiated term by term (``chebder``) and the chain rule applied
-    through the piece's map (x linear in lambda, or in ln lambda above ``LOG_FROM``: dx/dlambda
-    = 2 / ((b - a) lambda)) and through the stored transform (tau_d = exp(log_tau_d); e as
+    through the piece's map (x linear in lambda, or in ln lambda on the ln-lambda pieces:
+    dx/dlambda = 2 / ((b - a) lambda)) and through the stored transform (tau_d = exp(log_tau_d); e as
     :func:`summary` forms it: e = sqrt(1 - xi) while xi = 2 lambda int_F2 < 1/2, else
     exp(log_e); xi' = -2 e e' where xi >= 1/2, since there 2 int_F2 + 2 lambda int_F2' cancels:
     ``table_fields.field_derivative``, shared with the force-free end).

@@ -521,15 +521,14 @@ class TableBuilder:
 
     def compare(self, stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
         """Differences beyond the description's ``check_rtol`` between two tables (any form
-        ``as_tables`` reads): :func:`compare` with the history's floor.
+        ``as_tables`` reads): :func:`compare` with the history's settings.
 
         Returns
         -------
         list of str
             Readable lines, one per difference (empty: they agree).
         """
-        return compare(self.as_tables(stored), self.as_tables(fresh),
-                       self.history.trim if self.history else 0.0)
+        return compare(self.as_tables(stored), self.as_tables(fresh), self.history)
 
 
 def table_module(title: str, command: str, provenance: str, digest: str,
@@ -592,17 +591,17 @@ def _matrices(entries: Sequence[Any]) -> list[FloatArray]:
     return out
 
 
-def compare(stored: Tables, fresh: Tables, history_floor: float = 0.0) -> list[str]:
+def compare(stored: Tables, fresh: Tables, history: "HistorySettings | None" = None) -> list[str]:
     """Differences beyond the fresh spec's ``check_rtol`` between a stored and a rebuilt table.
 
     Parameters
     ----------
     stored, fresh : Tables
         The committed table (``stored_tables``) and the rebuilt one (``build_tables``).
-    history_floor : float
-        A history coefficient change that moves its field by less than this (on the field's
-        scale: divided by the sub-piece's weight) passes too (the builder's
-        ``HistorySettings.trim``).
+    history : HistorySettings, optional
+        The history's settings: a history coefficient change that moves its field by less
+        than its ``trim`` (on the field's scale: divided by the sub-piece's weight) passes too.
+        Without them every change counts.
 
     Notes
     -----
@@ -642,7 +641,8 @@ def compare(stored: Tables, fresh: Tables, history_floor: float = 0.0) -> list[s
             continue
         # without weights (a table given as bare arrays) every change counts
         wts = [w for subs in fresh.get("weights", {}).get(key, []) for w in subs]
-        floors = [history_floor / w / rtol for w in wts] or [0.0] * len(new)
+        floor = history.trim if history is not None else 0.0
+        floors = [floor / w / rtol for w in wts] or [0.0] * len(new)
         for i, (c_new, c_old, floor) in enumerate(zip(new, old, floors)):
             err = coefficient_difference(c_new, c_old, floor)
             if not err <= rtol:

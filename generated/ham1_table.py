@@ -5,9 +5,9 @@ float64 ham1 summary (zener_sym.ham.spectral.summary_numpy); `zener-sym regen --
 rebuilds and compares numerically (the node values come from floating-point root finding and
 quadrature).
 
-Inputs hash: e956767ae7c1c116
+Inputs hash: f631461a70302e21
 """
-INPUTS_HASH = 'e956767ae7c1c116'
+INPUTS_HASH = 'f631461a70302e21'
 #: lambda where the first-order tau_d equals pi/omega0 (the variable changes there)
 LAM_CONT = 2.0304532806603661
 #: the table's description (zener_sym.numerics.cheb_table.TableSpec): per lambda

@@ -5,20 +5,14 @@ scipy 1.17.1 solves at rtol 1e-13; `zener-sym regen --check exact-table` rebuild
 numerically (the node values come from a floating-point integrator, so the bytes are not
 reproducible across machines).
 
-Inputs hash: 7313fa62af50a8b1
+Inputs hash: 3de8fef006d5ae94
 """
-INPUTS_HASH = '7313fa62af50a8b1'
-#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)
-LAM_PIECES = (0.0, 1.0, 2.0, 3.5, 5.0, 10.0, 25.0, 80.0, 300.0, 1000.0)
-LOG_FROM = 5.0
-HISTORY_TO = 1000.0
+INPUTS_HASH = '3de8fef006d5ae94'
+#: the time maps' constants (zener_sym.exact.table_layout.Layout reads them back)
 C_STRETCH = 1.0
 C_END = 0.5
 S_ORBIT = 0.3
 S_TRANSIENT = 10.0
-N_SUB = {'C': 12, 'A': 16, 'M': 16, 'B': 12}
-TIME_PIECES = ('C', 'A', 'M', 'B')
-HISTORY_KEYS = ('f', 'I')
 #: the table's description (zener_sym.numerics.cheb_table.TableSpec): per lambda
 #: piece (kind of Chebyshev variable, start, end), the stored fields, points per
 #: piece, trimming level, --check tolerance, digits
@@ -38,6 +32,13 @@ TABLE_NODES = (22, 22, 22, 22, 22, 22, 22, 22, 22)
 TABLE_TRIM = 1e-14
 TABLE_CHECK_RTOL = 1e-10
 TABLE_DIGITS = 15
+#: the history's description (zener_sym.numerics.cheb_table_history.History): its
+#: upper end in lambda, time pieces in the order of time, the two stored fields
+#: and the sub-pieces per time piece
+HISTORY_TO = 1000.0
+TIME_PIECES = ('C', 'A', 'M', 'B')
+HISTORY_KEYS = ('f', 'I')
+N_SUB = {'C': 12, 'A': 16, 'M': 16, 'B': 12}
 
 #: field -> one tuple of Chebyshev coefficients per lambda piece
 SUMMARY = {

@@ -26,7 +26,7 @@ def _lams(top: float, n: int, seed: int) -> np.ndarray:
     """n lambdas on [0, top], unsorted, with the range's ends and (for the exact tables) the
     pieces' edges and their neighbours among them."""
     rng = np.random.default_rng(seed)
-    edges = [e for e in table._tables()["summary"].pieces.edges if e <= top] if top > 3 else []
+    edges = [e for e in table._tables().summary.pieces.edges if e <= top] if top > 3 else []
     special = [0.0, top, *edges, *(np.nextafter(e, 0.0) for e in edges if e > 0)]
     lam = np.concatenate([special, rng.uniform(0.0, top, n - len(special))])
     return rng.permutation(lam)
@@ -85,7 +85,7 @@ def test_summary_derivative_alone_is_the_batch(contact_end):
 def test_one_series_is_the_series_of_every_field(module):
     """``SummaryTable.one`` (the inverses' route) sums the same way as ``values`` and
     ``derivatives`` (the summary's and the derivative's route): the same bits."""
-    tab = module._tables()["summary"]
+    tab = module._tables().summary
     lam = _lams(1000.0, 1500, 4)
     lam = lam[lam > 0.0]
     v, i, x, _ = tab.values(lam)

@@ -409,7 +409,9 @@ def test_the_copy_checks_can_fail():
 TABLE_MODULES = ("zener_sym.exact.table", "zener_sym.exact.force_table", "zener_sym.ham.table",
                  "zener_sym.exact.table_build", "zener_sym.exact.force_table_build",
                  "zener_sym.ham.table_build", "zener_sym.numerics.cheb_table",
-                 "zener_sym.numerics.cheb_table_build")
+                 "zener_sym.numerics.cheb_table_build", "zener_sym.numerics.cheb_table_history",
+                 "zener_sym.exact.table_fields", "zener_sym.exact.table_layout",
+                 "zener_sym.exact.force_table_layout")
 #: Lines in a run that counts as a repeated block.
 RUN = 6
 #: The C runtime's templates (codegen/c).
@@ -529,3 +531,83 @@ def test_the_block_checks_can_fail():
     c = "static int zs__f(int a)\n{\n    return a;\n}\nint zs_g(void);\nint zs_g(void)\n{\n}\n"
     assert c_functions(c) == {"zs__f": "static int zs__f(int a)\n{\n    return a;\n}",
                               "zs_g": "int zs_g(void)\n{\n}"}
+
+
+# --- the engine owns the history, and each generated table is described once (issue 36) -----
+#: The engine's modules: numerics/cheb_table*.py.
+ENGINE = {m for m in MODULES if m.startswith("zener_sym.numerics.cheb_table")}
+#: Names a generated table module may not assign: ham1's old summary name and piece alias, and
+#: the layout constants that repeated its ``TABLE_*`` description.
+RETIRED_TABLE_NAMES = {"COEF", "PIECES", "LAM_PIECES", "LOG_FROM", "SUMMARY_KEYS"}
+#: What the engine writes into a generated table: the description (``spec_assignments``) and
+#: the history's description (``history_assignments``).
+ENGINE_TABLE_NAMES = {"TABLE_PIECES", "TABLE_FIELDS", "TABLE_NODES", "TABLE_TRIM",
+                      "TABLE_CHECK_RTOL", "TABLE_DIGITS", "HISTORY_TO", "TIME_PIECES",
+                      "HISTORY_KEYS", "N_SUB", "SUMMARY", "HISTORY", "INPUTS_HASH"}
+
+
+def calls(source: str, name: str) -> list[int]:
+    """Lines of a source text that call ``name`` (as a name or an attribute)."""
+    return [n.lineno for n in ast.walk(ast.parse(source)) if isinstance(n, ast.Call) and (
+        isinstance(n.func, ast.Name) and n.func.id == name
+        or isinstance(n.func, ast.Attribute) and n.func.attr == name)]
+
+
+def assigned_names(source: str) -> set[str]:
+    """Module-level names a source text assigns (``NAME = ...``)."""
+    return {t.id for n in ast.parse(source).body if isinstance(n, ast.Assign)
+            for t in n.targets if isinstance(t, ast.Name)}
+
+
+def class_fields(source: str) -> set[str]:
+    """Annotated class attributes (dataclass fields) of every class of a source text."""
+    return {b.target.id for n in ast.walk(ast.parse(source)) if isinstance(n, ast.ClassDef)
+            for b in n.body if isinstance(b, ast.AnnAssign) and isinstance(b.target, ast.Name)}
+
+
+def test_history_is_evaluated_in_the_engine_only():
+    """Horner over a history's sub-pieces (``horner_take_pair``), the lambda contraction
+    (``line_coefficients``) and the arrangement of the coefficients (``history_rows``) are called
+    in the engine only: an instance supplies its time maps (``TimeMaps``), nothing more."""
+    for name in ("horner_take_pair", "line_coefficients", "history_rows"):
+        where = {m for m, text in SOURCES.items() if calls(text, name)}
+        assert where <= ENGINE, (name, sorted(where - ENGINE))
+    for m in ("zener_sym.exact.table", "zener_sym.exact.force_table"):
+        assert re.search(r"^class _Maps\(TimeMaps\):", SOURCES[m], re.M), m
+
+
+def test_each_generated_table_is_described_once():
+    """No generated table assigns a retired name (COEF, the PIECES alias, the layout's
+    LAM_PIECES, LOG_FROM, SUMMARY_KEYS); its summary is SUMMARY; and no layout class declares a
+    name the engine writes (the description and the history's description are the engine's)."""
+    tables = [m for m, text in SOURCES.items() if m.startswith("zener_sym.generated.")
+              and "TABLE_PIECES" in assigned_names(text)]
+    assert len(tables) == 3, tables
+    for m in tables:
+        names = assigned_names(SOURCES[m])
+        assert not names & RETIRED_TABLE_NAMES, (m, sorted(names & RETIRED_TABLE_NAMES))
+        assert "SUMMARY" in names, m
+    for m in ("zener_sym.exact.table_layout", "zener_sym.exact.force_table_layout"):
+        repeated = class_fields(SOURCES[m]) & (ENGINE_TABLE_NAMES | RETIRED_TABLE_NAMES)
+        assert not repeated, (m, sorted(repeated))
+
+
+def test_table_functions_are_plain_defs():
+    """No table module makes its functions by assembling ``__module__`` or ``__doc__`` from
+    strings (the old ``range_mask``, ``log_quantity_function``): each is a ``def`` in its
+    module, and the range has one form (module attributes LAM_MIN, LAM_MAX)."""
+    for m in TABLE_MODULES:
+        assert not re.search(r"\.__(module|doc)__ = ", SOURCES[m]), m
+    for m in ("zener_sym.exact.table", "zener_sym.exact.force_table", "zener_sym.ham.table"):
+        assert {"in_range", "summary"} <= defined_functions(SOURCES[m]), m
+        assert '"LAM_MAX"' in SOURCES[m], m
+
+
+def test_the_engine_checks_can_fail():
+    text = ("from x import horner_take_pair\nCOEF = {}\nPIECES = 1\n"
+            "class L:\n    LOG_FROM: float\n    N_SUB: dict\n"
+            "def f(a):\n    return horner_take_pair(a, 1, 2)\nf.__doc__ = 'x'\n")
+    assert calls(text, "horner_take_pair") == [8]
+    assert assigned_names(text) & RETIRED_TABLE_NAMES == {"COEF", "PIECES"}
+    assert class_fields(text) == {"LOG_FROM", "N_SUB"}
+    assert re.search(r"\.__(module|doc)__ = ", text)

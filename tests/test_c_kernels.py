@@ -222,8 +222,15 @@ def test_exp_and_log1p_passes_against_mpmath(tmp_path):
 
 
 # --- exact model -----------------------------------------------------------------------------
+def _table_edges(t):
+    """A generated table's piece ends and where its ln-lambda pieces start, read from its
+    description (TABLE_PIECES: (kind, start, end) per lambda piece)."""
+    edges = [float(a) for _, a, _ in t.TABLE_PIECES] + [float(t.TABLE_PIECES[-1][2])]
+    return edges, min(float(a) for k, a, _ in t.TABLE_PIECES if k == "log")
+
+
 def _edges():
-    return [float(x) for x in PY["table"].LAM_PIECES]
+    return _table_edges(PY["table"])[0]
 
 
 def _lams():
@@ -249,10 +256,10 @@ def _piece_times(lam):
     constants (tau_w0 = tau_dc + lambda rest_over_lam; above LOG_FROM tau_s = tau_dc + lambda
     (S_ORBIT + S_TRANSIENT lambda^(-5/3)), table_build.split_time), not by the code under test."""
     t = PY["table"]
-    edges = np.array(t.LAM_PIECES, dtype=float)
+    edges, log_from = _table_edges(t)
     i = min(int(np.searchsorted(edges, lam, side="right")) - 1, len(edges) - 2)
     a, b = edges[i], edges[i + 1]
-    log = a >= t.LOG_FROM
+    log = a >= log_from
     g, ga, gb = (np.log(lam), np.log(a), np.log(b)) if log else (lam, a, b)
     x = np.clip((2 * g - ga - gb) / (gb - ga), -1, 1)
     v = {k: float(np.polynomial.chebyshev.chebval(x, t.SUMMARY[k][i])) for k in t.SUMMARY}
@@ -407,10 +414,10 @@ def _force_piece_times(lam):
     by the code under test."""
     from zener_sym.generated import exact_force_table as t
 
-    edges = np.array(t.LAM_PIECES, dtype=float)
+    edges, log_from = _table_edges(t)
     i = min(int(np.searchsorted(edges, lam, side="right")) - 1, len(edges) - 2)
     a, b = edges[i], edges[i + 1]
-    f = np.log if a >= t.LOG_FROM else np.sqrt
+    f = np.log if a >= log_from else np.sqrt
     x = np.clip((2 * f(lam) - f(a) - f(b)) / (f(b) - f(a)), -1, 1)
     v = {k: float(np.polynomial.chebyshev.chebval(x, t.SUMMARY[k][i])) for k in t.SUMMARY}
     tau_dc, tau_d = v["tau_dc"], float(np.exp(v["log_tau_d"]))
@@ -425,7 +432,7 @@ def _force_lams():
     from zener_sym.generated import exact_force_table as t
 
     rng = np.random.default_rng(2025)
-    return sorted({float(x) for x in t.LAM_PIECES} | {float(x) for x in rng.uniform(0, 1000, 12)}
+    return sorted(set(_table_edges(t)[0]) | {float(x) for x in rng.uniform(0, 1000, 12)}
                   | {float(x) for x in rng.uniform(0, 5, 6)} | {1e-12, 1e-9, 0.01, 4.999999})
 
 

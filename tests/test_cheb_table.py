@@ -1,5 +1,5 @@
-"""The one Chebyshev-table engine (``numerics.cheb_table`` and ``numerics.cheb_table_build``):
-a new table is a configuration. Small tables are built here from configurations the package
+"""The one Chebyshev-table engine (``numerics.cheb_table``, ``numerics.cheb_table_history`` and
+``numerics.cheb_table_build``): a new table is a configuration. Small tables are built here from configurations the package
 does not ship (a closed-form function on pieces of every kind, an ODE solved by scipy at each
 node, a two-field history on sub-pieces) and evaluated by the same evaluator the plate's, the
 force-free end's and the ham1 tables use, against independent routes (the closed forms)."""
@@ -9,9 +9,10 @@ import numpy as np
 import pytest
 
 from zener_sym.numerics import cheb_table_build as engine
-from zener_sym.numerics.cheb_table import (PIECE_KINDS, SummaryTable, TableSpec, history_rows,
-                                           line_coefficients, spec_assignments, spec_of)
-from zener_sym.numerics.chebyshev import horner_take_pair
+from zener_sym.numerics.cheb_table import (PIECE_KINDS, SummaryTable, TableSpec, spec_assignments,
+                                           spec_of)
+from zener_sym.numerics.cheb_table_history import (History, Lines, TimeMaps, history_rows,
+                                                   sub_piece_values)
 
 #: One piece of every kind: lambda, sqrt(lambda - start) (a (lambda - 2)^{3/2} term at its
 #: start), sqrt(lambda), ln lambda.
@@ -134,43 +135,94 @@ def test_rendered_table_reads_back_and_compares():
     assert len(engine.compare(stored, moved)) == 1
 
 
-def _check_history(rows, k, deg, need, lu, ip, xl, atol):
-    """The history (``history_rows``' arrays) on the distinct sorted lambdas ``lu`` (pieces
-    ``ip``, variables ``xl``) at 101 reduced times each, by ``line_coefficients`` and Horner per
-    point, against the closed forms f = exp(-lambda y) and I = sin(lambda y)."""
-    tl = np.polynomial.chebyshev.chebvander(xl, max(r.shape[1] for r in rows if r is not None) - 1)
-    cT = line_coefficients(rows, ip, tl, deg, k)
-    yy = np.linspace(0.0, 1.0, 101)
-    line = np.repeat(np.arange(len(lu)), yy.size)
-    z = np.tile(yy, len(lu)) * k
-    sub = np.minimum(z.astype(np.intp), k - 1)
-    f, i = horner_take_pair(cT[: int(need.max())], line * k + sub, 2.0 * (z - sub) - 1.0)
-    lam_y = lu[line] * np.tile(yy, len(lu))
-    np.testing.assert_allclose(f, np.exp(-lam_y), rtol=0, atol=atol)
-    np.testing.assert_allclose(i, np.sin(lam_y), rtol=0, atol=atol)
+class _ToyMaps(TimeMaps):
+    """A toy instance's time maps: one time piece "T" over 0 <= tau <= 1 with reduced time
+    y = tau, the stored fields as they are, and past tau = 1 their values at y = 1."""
+
+    fields = ("f", "I")
+
+    def __init__(self, lam):
+        self.lam = lam
+
+    def piece_of(self, lines):
+        return (lines.tau > 1.0).astype(np.int8)
+
+    def constants(self, name, k):
+        return k
+
+    def reduced_time(self, name, m, t, li):
+        return t * m, None
+
+    def store(self, name, f, g, t, li, aux, out, at):
+        out["f"][at], out["I"][at] = f, g
+
+    def after(self, out, at, li):
+        out["f"][at], out["I"][at] = np.exp(-self.lam[li]), np.sin(self.lam[li])
+
+
+def _check_history(history, tab, atol):
+    """The engine's history with the toy maps on a grid of lambdas (a column per line, and
+    scattered points) against the closed forms f = exp(-lambda y), I = sin(lambda y)."""
+    lam = np.array([0.0, 0.3, 1.0, 2.2, 3.0, 0.3])  # a repeated lambda: one line
+    tau = np.linspace(0.0, 1.2, 121)
+    for lam_g, tau_g in ((lam[:, None] * np.ones(tau.size), tau[None, :]),
+                         (np.repeat(lam, 20), np.resize(tau, lam.size * 20))):
+        lines = Lines.of(lam_g, tau_g)
+        tab.check(lines.lam, history.hi)
+        _, ip, xl, _ = tab.values(lines.lam)
+        out = history.evaluate(lines, ip, history.basis(xl), _ToyMaps(lines.lam))
+        lam_y = (np.broadcast_to(lam_g, lines.shape) * np.minimum(np.broadcast_to(
+            tau_g, lines.shape), 1.0)).ravel()
+        np.testing.assert_allclose(out["f"], np.exp(-lam_y), rtol=0, atol=atol)
+        np.testing.assert_allclose(out["I"], np.sin(lam_y), rtol=0, atol=atol)
+
+
+def _toy_history(n_sub, n_time, hi):
+    """The toy history's settings: (T, f) = exp(-lambda y), (T, I) = sin(lambda y)."""
+    return engine.HistorySettings(time_pieces=("T",), fields=("f", "I"), n_sub={"T": n_sub},
+                                  hi=hi, trim=1e-15, quantum=1e-17,
+                                  weight=lambda data, key: np.ones(n_sub),
+                                  note=("#: the toy history",))
+
+
+def _toy_samples(lam, y):
+    return {("T", "f"): np.exp(-lam * y), ("T", "I"): np.sin(lam * y)}
 
 
 def test_history_on_sub_pieces():
     """A two-field history on sub-pieces of a reduced time y in [0, 1] (the exact tables'
-    layout): built by the engine, evaluated by ``history_rows``, ``line_coefficients`` and Horner
-    per point, against the closed forms f = exp(-lambda y) and I = sin(lambda y)."""
+    layout): built by the engine and evaluated by its ``History`` with a toy instance's time
+    maps, against the closed forms f = exp(-lambda y) and I = sin(lambda y)."""
     n_sub, n_time = 4, 12
     y = engine.sub_nodes(n_sub, n_time)
     spec = TableSpec(pieces=(("lam", 0.0, 1.0), ("lam", 1.0, 3.0)), fields=("one",),
                      nodes=(14, 14), trim=1e-15, check_rtol=1e-12)
 
     def sample(p, lams):
-        return [{"one": 1.0, ("T", "f"): np.exp(-lam * y), ("T", "I"): np.sin(lam * y)}
-                for lam in lams]
+        return [{"one": 1.0, **_toy_samples(lam, y)} for lam in lams]
 
-    t = engine.build_tables(spec, sample, [("T", "f"), ("T", "I")], 1e-15,
-                            lambda data, key: np.ones(n_sub))
-    rows, k, deg, need = history_rows([t["history"][("T", "f")], t["history"][("T", "I")]])
-    assert k == n_sub and len(rows) == 2
+    t = engine.build_tables(spec, sample, _toy_history(n_sub, n_time, 3.0))
+    piece = history_rows([t["history"][("T", "f")], t["history"][("T", "I")]])
+    assert piece.n_sub == n_sub and len(piece.rows) == 2
     tab = SummaryTable(spec.pieces, spec.fields, t["summary"], "history test")
-    lu = np.array([0.0, 0.3, 1.0, 2.2, 3.0])  # distinct and sorted: one line each
-    _, ip, xl, _ = tab.values(lu)
-    _check_history(rows, k, deg, need, lu, ip, xl, 1e-13)
+    _check_history(History({"T": piece}, 3.0, "history test"), tab, 1e-13)
+
+
+def test_one_guard_on_the_sub_piece():
+    """The engine's one guard: rounding past a piece's ends is clamped (z a hair below 0 is
+    sub-piece 0, z at or past K the last), a reduced time that would index another line's row
+    raises: ValueError for a negative or NaN time, RuntimeError (a bug) otherwise."""
+    k = 2
+    # one line, two sub-pieces: field 0 = 10 s + x (monomial in the sub-piece's x), field 1 = 0
+    rows = np.array([[10.0 * s + 0j for s in range(k)], [1.0 + 0j] * k])
+    f, _ = sub_piece_values(rows, k, np.array([-1e-17, 0.5, 1.5, k + 1e-12]), np.zeros(4, np.intp),
+                            np.ones(4), "toy")
+    np.testing.assert_allclose(f, [-1.0, 0.0, 10.0, 11.0], atol=1e-10)
+    for z, t, err in ((-1.0, 0.5, RuntimeError), (-3.0, -1.0, ValueError),
+                      (np.nan, np.nan, ValueError), (np.nan, 0.5, RuntimeError)):
+        with pytest.raises(err, match="toy"):
+            sub_piece_values(rows, k, np.array([0.5, z]), np.zeros(2, np.intp),
+                             np.array([0.5, t]), "toy")
 
 
 @pytest.mark.parametrize("builder, module", [
@@ -194,28 +246,22 @@ def test_committed_tables_rerender_byte_for_byte(builder, module):
 def test_a_new_table_with_a_history_is_a_builder_configuration():
     """A table with a summary and a history, from a ``TableBuilder`` configuration alone (no
     module of its own): built, rendered to a module's text, read back by the runtime's
-    ``SummaryTable.of`` and ``history_tables``, evaluated (the ordered sum; the lambda
-    contraction and Horner per point) against the closed forms f = exp(-lambda y),
-    I = sin(lambda y), and compared with its rebuild (and with a moved coefficient)."""
-    from zener_sym.numerics.cheb_table import history_tables
-
+    ``SummaryTable.of`` and ``History.of``, evaluated (the ordered sum; the engine's history
+    with a toy instance's time maps: its reduced time and back-transform only) against the
+    closed forms f = exp(-lambda y), I = sin(lambda y), and compared with its rebuild (and with
+    a moved coefficient)."""
     n_sub, n_time = 4, 12
     y = engine.sub_nodes(n_sub, n_time)
-    keys = (("T", "f"), ("T", "I"))
 
     def sample(p, lams):
-        return [{"one": 1.0, "g": float(_g(lam)), ("T", "f"): np.exp(-lam * y),
-                 ("T", "I"): np.sin(lam * y)} for lam in lams]
+        return [{"one": 1.0, "g": float(_g(lam)), **_toy_samples(lam, y)} for lam in lams]
 
     builder = engine.TableBuilder(
         spec=TableSpec(pieces=(("lam", 0.0, 1.0), ("sqrt_lam", 1.0, 3.0)), fields=("one", "g"),
                        nodes=(16, 16), trim=1e-15, check_rtol=1e-12),
         file=engine.TableFile("toy_table.py", "toy-table", title="A toy table.",
                               provenance="Built by the test."),
-        sample=sample, digest=lambda: "0" * 16,
-        history=engine.HistorySettings(keys=keys, trim=1e-15, quantum=1e-17,
-                                       weight=lambda data, key: np.ones(n_sub),
-                                       note=("#: the toy history",)))
+        sample=sample, digest=lambda: "0" * 16, history=_toy_history(n_sub, n_time, 3.0))
     built = builder.build()
     text = builder.render(built)
     assert text.startswith('"""A toy table.') and "GENERATED by `zener-sym regen toy-table`" in text
@@ -227,10 +273,20 @@ def test_a_new_table_with_a_history_is_a_builder_configuration():
     problems = builder.compare(moved, built)
     assert len(problems) == 1 and problems[0].startswith("summary g lambda piece 1:"), problems
 
-    spec = spec_of(ns)
-    tab = SummaryTable(spec.pieces, spec.fields, ns["SUMMARY"], "toy table")
+    tab = SummaryTable.of(ns, "toy table")
     lu = np.array([0.0, 0.4, 1.0, 1.7, 3.0])
-    v, ip, xl, _ = tab.values(lu)
+    v, _, _, _ = tab.values(lu)
     np.testing.assert_allclose(v["g"], _g(lu), rtol=0, atol=1e-12)
-    rows, k, deg, need = history_tables(ns["HISTORY"], ("T",), ("f", "I"))["T"]
-    _check_history(rows, k, deg, need, lu, ip, xl, 1e-12)
+    _check_history(History.of(ns, "toy history"), tab, 1e-12)
+
+
+def test_a_series_zero_in_both_tables_agrees():
+    """``compare``'s rule for a series stored as 0 where it is unused (the force-free end's
+    log_tau_p on its ln-lambda pieces): zero against zero agrees, zero against nonzero is a
+    difference."""
+    spec = TableSpec(pieces=(("lam", 0.0, 1.0), ("log", 1.0, 10.0)), fields=("a",), nodes=(4, 4),
+                     trim=1e-15, check_rtol=1e-12)
+    zero = {"spec": spec, "summary": {"a": [np.array([1.0, 0.5]), np.zeros(1)]}}
+    assert engine.compare(zero, zero) == []
+    moved = {"spec": spec, "summary": {"a": [np.array([1.0, 0.5]), np.array([1e-30])]}}
+    assert len(engine.compare(zero, moved)) == 1 and len(engine.compare(moved, zero)) == 1

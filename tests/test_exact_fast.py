@@ -13,6 +13,7 @@ from zener_sym.exact import solver as exact, table as exact_fast
 from zener_sym.exact import table_build as build
 from zener_sym.exact import table_layout
 from zener_sym.generated import exact_table
+from zener_sym.numerics.blocks import BLOCK
 
 FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse", "int_F2")
 
@@ -217,11 +218,11 @@ def test_line_and_scattered_evaluation_agree():
 
 
 def test_blocks_do_not_change_the_numbers():
-    """A grid of several blocks (``table._BLOCK`` points each) gives, point for point, what each
+    """A grid of several blocks (``blocks.BLOCK`` points each) gives, point for point, what each
     of its lines gives alone (one block), to the ulp (the lambda contraction's matrix product
     may round differently for another number of lines)."""
     lam = np.array([0.0, 0.3, 4.0, 17.0, 999.0, 2.5])
-    n = exact_fast._BLOCK // 2 + 17
+    n = BLOCK // 2 + 17
     s = zs.summary(lam, model="exact")
     tau = s.tau_d[:, None] * np.linspace(0.0, 1.1, n)[None, :]
     grid = exact_fast.history(np.broadcast_to(lam[:, None], tau.shape), tau)

@@ -74,7 +74,9 @@ def test_batch_and_scalar_agree_bit_for_bit():
 
 
 def test_range_is_zero_to_lam_crit():
-    assert table.lam_max() == h1.LAM_CRIT
+    assert table.LAM_MAX == h1.LAM_CRIT and table.LAM_MIN == 0.0
+    with pytest.warns(DeprecationWarning, match="LAM_MAX"):
+        assert table.lam_max() == table.LAM_MAX
     assert list(table.in_range([-1e-300, 0.0, 2.44, h1.LAM_CRIT])) == [False, True, True, False]
     for bad in (-0.1, h1.LAM_CRIT, 3.0):
         with pytest.raises(ValueError, match="outside the ham1 table's range"):
@@ -96,10 +98,10 @@ def test_check_command_passes_and_detects_a_change(capsys):
 
     assert regen.run(["ham1-table"], check=True) == 0
     assert "ham1-table: up to date" in capsys.readouterr().out
-    coef = dict(ham1_table.COEF)
+    coef = dict(ham1_table.SUMMARY)
     coef["tau_dc"] = tuple(tuple(c) for c in coef["tau_dc"][:1]) + tuple(
         (c[0] * (1 + 1e-9),) + tuple(c[1:]) for c in coef["tau_dc"][1:])
-    stored = {**vars(ham1_table), "COEF": coef}
+    stored = {**vars(ham1_table), "SUMMARY": coef}
     problems = table_build.compare(stored, table_build.build_tables())
     assert any("tau_dc lambda piece 1" in p for p in problems), problems
 

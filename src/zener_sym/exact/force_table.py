@@ -13,71 +13,70 @@ from __future__ import annotations
 
 import functools
 import importlib
-from typing import TypedDict
+from typing import Any, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
 
-from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.cheb_table import (Index, SummaryTable, history_tables, line_coefficients,
-                                   derivative_input, log_quantity_function,
-                                   range_mask)
-from ..numerics.chebyshev import horner_take_pair
+from ..numerics.cheb_table import SummaryTable, derivative_input
+from ..numerics.cheb_table_history import History, Index, Lines, TimeMaps
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
-from .force_table_layout import ForceLayout, recovery_z_end
+from .force_table_layout import recovery_z_end
+from . import table_fields
+from .table_fields import DERIVATIVE_FIELDS, field_derivative, summary_fields
 
 __all__ = ["LAM_MIN", "LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range", "summary",
-           "summary_derivative", "log_quantity", "history"]
+           "summary_derivative", "DERIVATIVE_FIELDS", "log_quantity", "history"]
 
-#: LAM_MIN and LAM_MAX (the tables' range) are read from the generated table on first use
-#: (``__getattr__``), the one source of the layout (as :mod:`.table`'s).
-_RANGE = ("LAM_MIN", "LAM_MAX")
 #: Documented (and tested) relative error bound of every summary field.
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
 HISTORY_ATOL = 1e-10
-#: One time piece's history (``cheb_table.history_rows``).
-_PieceLayout = tuple[list[FloatArray | None], int, int, npt.NDArray[np.int_]]
 
 
-class _Tables(TypedDict):
+class _Tables(NamedTuple):
     """The generated table, arranged for evaluation (``_tables``)."""
 
-    layout: ForceLayout
+    #: The summary series (the engine's).
     summary: SummaryTable
-    history: dict[str, _PieceLayout]
-
-
-def __getattr__(name: str) -> float:
-    if name in _RANGE:
-        s = _tables()["summary"]
-        return s.lo if name == "LAM_MIN" else s.hi
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    #: The history (the engine's), over the summary's range.
+    history: History
 
 
 @functools.cache
 def _tables() -> _Tables:
-    """The generated table, loaded on first use; its layout is read from it."""
+    """The generated table, loaded on first use (its description is read from it)."""
     t = importlib.import_module("zener_sym.generated.exact_force_table")
-    lay = ForceLayout.of(t)
-    return {"layout": lay, "history": history_tables(t.HISTORY, lay.TIME_PIECES, lay.HISTORY_KEYS),
-            "summary": SummaryTable.of(t, "force-end table",
-                                       "; integrate instead (backend='scipy')")}
+    return _Tables(SummaryTable.of(t, "force-end table", "; integrate instead (backend='scipy')"),
+                   History.of(t, "force-end table"))
 
 
-#: Boolean mask: lambda inside the tables' range [LAM_MIN, LAM_MAX].
-in_range = range_mask(lambda: _tables()["summary"], __name__,
-                      "the tables' range [LAM_MIN, LAM_MAX]")
+def __getattr__(name: str) -> float:
+    """LAM_MIN and LAM_MAX (the tables' range), read from the generated table on first use (as
+    :mod:`.table`'s)."""
+    if name == "LAM_MIN":
+        return _tables().summary.lo
+    if name == "LAM_MAX":
+        return _tables().summary.hi
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+    """Mask of lam's shape, True where lambda (Eq. 11) lies in the force-end tables' range
+    [LAM_MIN, LAM_MAX] (summary and history alike)."""
+    return _tables().summary.in_range(lam)
 
 
 def _core(lam: FloatArray) -> tuple[dict[str, FloatArray], Index, FloatArray, FloatArray]:
-    """The stored series at lam (1-D) and the derived xi, e, tau_d; piece index, x and the
-    Chebyshev basis."""
-    v, i, x, tl = _tables()["summary"].values(lam)
+    """The stored series at lam (1-D) and the derived xi, e, tau_d, F_m, int_F2; piece index,
+    x and the Chebyshev basis (the history's, ``History.basis`` explains why)."""
+    v, i, x, tl = _tables().summary.values(lam)
     v["xi"] = lam * v["xi_over_lam"]
     v["e"] = _solver.restitution(v["xi"], np.exp(v["log_e"]))
     v["tau_d"] = np.exp(v["log_tau_d"])
+    v["F_m"] = np.exp(v["log_F_m"])
+    v["int_F2"] = np.exp(v["log_int_F2"])
     return v, i, x, tl
 
 
@@ -103,27 +102,17 @@ def summary(lam: RealArrayLike) -> dict[str, FloatArray]:
         For lambda outside the tables' range.
     """
     lam_a = np.asarray(lam, dtype=float)
-    shape = lam_a.shape
     lam1 = lam_a.reshape(-1)
     v, _, _, _ = _core(lam1)
-    tau_dr = v["tau_d"] - v["tau_dc"]
-    out = {"lam": lam1, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
-           "tau_dr": tau_dr, "eta": tau_dr / v["tau_dc"], "e": v["e"],
-           "F_m": np.exp(v["log_F_m"]), "impulse": 1.0 + v["e"],
-           "int_F2": np.exp(v["log_int_F2"]), "xi": v["xi"]}
-    return {k: a.reshape(shape) for k, a in out.items()}
-
-
-#: Summary fields :func:`summary_derivative` differentiates (as the plate table's).
-DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
-                     "int_F2", "xi")
+    return {k: a.reshape(lam_a.shape) for k, a in summary_fields(lam1, v).items()}
 
 
 def summary_derivative(lam: RealArrayLike, field: str = "e") -> FloatArray:
     """d(field)/d(lambda) of the tabulated force-end summary from the series' own derivative.
 
-    ``table.summary_derivative`` documents the contract. lambda must be > 0: near 0 the fields
-    have lambda^(3/2) terms and the tables' variable is sqrt(lambda).
+    ``table.summary_derivative`` documents the contract (the chain rule and the e/xi switch are
+    ``table_fields.field_derivative``, shared). lambda must be > 0: near 0 the fields have
+    lambda^(3/2) terms and the tables' variable is sqrt(lambda).
 
     Parameters
     ----------
@@ -148,35 +137,92 @@ def summary_derivative(lam: RealArrayLike, field: str = "e") -> FloatArray:
                          "tables' variable is sqrt(lambda) (the fields have lambda^(3/2) terms, "
                          "so their second derivative is infinite there); ask at lambda > 0")
     v, i, x, _ = _core(lam1)
-    dv = _tables()["summary"].derivatives(lam1, i, x)
-    dxi = v["xi_over_lam"] + lam1 * dv["xi_over_lam"]
-    small = v["xi"] < 0.5
-    de = np.where(small, -dxi / (2.0 * v["e"]), v["e"] * dv["log_e"])
-    # where xi >= 1/2 the e route is the accurate one (xi' = -2 e e'), as the plate's
-    dxi = np.where(small, dxi, -2.0 * v["e"] * de)
-    tau_d = v["tau_d"]
-    dtau_d = tau_d * dv["log_tau_d"]
-    out: FloatArray = {"e": de, "impulse": de, "xi": dxi, "tau_d": dtau_d, "delta_m": dv["delta_m"],
-           "tau_dc": dv["tau_dc"], "tau_dr": dtau_d - dv["tau_dc"],
-           "eta": (dtau_d * v["tau_dc"] - tau_d * dv["tau_dc"]) / v["tau_dc"] ** 2,
-           "F_m": np.exp(v["log_F_m"]) * dv["log_F_m"],
-           "int_F2": np.exp(v["log_int_F2"]) * dv["log_int_F2"]}[field]
+    dv = _tables().summary.derivatives(lam1, i, x)
+    out = field_derivative(field, v, dv, v["xi_over_lam"] + lam1 * dv["xi_over_lam"],
+                           v["F_m"] * dv["log_F_m"], v["int_F2"] * dv["log_int_F2"])
     return out.reshape(lam_in.shape)
 
 
-#: (ln q, d ln q / d lambda) for the inverses: e and tau_d from their stored logs, xi =
-#: lambda (xi / lambda)
-log_quantity = log_quantity_function(lambda: _tables()["summary"], __name__,
-                                     {"e": "log_e", "tau_d": "log_tau_d"},
-                                     {"xi": ("xi_over_lam",
-                                             lambda lam, s: np.log(lam) + np.log(s))})
+def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
+    """(ln q, d ln q / d lambda) of q = e, tau_d or xi (xi = lambda (xi / lambda)) for :mod:`.inverse`, from the one
+    series q needs: ``table_fields.log_quantity`` on this table (ValueError for another q or a
+    lambda outside the range)."""
+    return table_fields.log_quantity(_tables().summary, lam, quantity, "xi_over_lam",
+                                     lambda lam1, s: np.log(lam1) + np.log(s))
+
+
+class _Maps(TimeMaps):
+    """The force-free end's time maps on the distinct lambdas of one ``history`` call: time
+    pieces C (tau <= tau_dc), R (to tau_d), then past the contact; y = sqrt(tau / tau_dc) in C;
+    in R y = a (1 - sqrt(b (tau_P - tau))) below the ln-lambda pieces, (tau - tau_dc) /
+    (tau_d - tau_dc) on them; delta = tau exp(f) (C), (tau_P - tau) exp(f) or exp(f) (R), the
+    velocity v = delta' stored as itself, F_c = sqrt(delta) (delta + (3/2) lambda v) and the
+    impulse 1 - v."""
+
+    fields = ("delta", "velocity", "force", "impulse")
+
+    def __init__(self, lu: FloatArray, v: dict[str, FloatArray],
+                 log: npt.NDArray[np.bool_]) -> None:
+        self.log, self.tau_dc, self.tau_d = log, v["tau_dc"], v["tau_d"]
+        self.tau_p = np.where(log, np.inf, np.exp(v["log_tau_p"]))  # the plate's tau_d (builder)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            z_end = recovery_z_end(self.tau_dc, self.tau_d, self.tau_p)
+            self.r_a = np.where(log, 1.0 / (self.tau_d - self.tau_dc), 1.0 / (1.0 - z_end))
+            self.r_b = np.where(log, 0.0, 1.0 / (self.tau_p - self.tau_dc))
+            self.c_a = 1.0 / self.tau_dc
+        self.lam_1, self.e_end = 1.5 * lu, v["e"]
+
+    def piece_of(self, lines: Lines) -> npt.NDArray[np.int8]:
+        """0 C, 1 R, 2 after the contact: [tau > tau_dc] (1 + [tau >= tau_d])."""
+        t2, (dc, dd) = lines.per_point((self.tau_dc, self.tau_d))
+        piece = (t2 >= dd).view(np.int8)
+        piece += 1
+        piece *= t2 > dc
+        return piece.ravel()
+
+    def constants(self, name: str, k: int) -> int:
+        return k  # the maps' per-line constants are the same for both pieces (made once)
+
+    def reduced_time(self, name: str, m: Any, t: FloatArray,
+                     li: Index) -> tuple[FloatArray, Any]:
+        if name == "C":
+            return np.sqrt(t * self.c_a.take(li)) * m, None
+        lg = self.log.take(li)
+        # >= 0: at lambda = 0 tau_d and tau_P are the same time, each to rounding
+        gap = np.maximum(self.tau_p.take(li) - t, 0.0)
+        with np.errstate(invalid="ignore"):
+            y_s = self.r_a.take(li) * (1.0 - np.sqrt(np.where(lg, 0.0, gap) * self.r_b.take(li)))
+        y = np.where(lg, (t - self.tau_dc.take(li)) * self.r_a.take(li), y_s)
+        return y * m, (lg, gap)
+
+    def store(self, name: str, f: FloatArray, g: FloatArray, t: FloatArray, li: Index, aux: Any,
+              out: dict[str, FloatArray], at: Index) -> None:
+        delta = np.exp(f)
+        if name == "C":
+            delta *= t
+        else:
+            lg, gap = aux
+            delta *= np.where(lg, 1.0, gap)
+        self._fields(out, at, li, delta, g)
+
+    def after(self, out: dict[str, FloatArray], at: Index, li: Index) -> None:
+        self._fields(out, at, li, np.zeros(at.shape), -self.e_end.take(li))
+
+    def _fields(self, out: dict[str, FloatArray], at: Index, li: Index, delta: FloatArray,
+                vel: FloatArray) -> None:
+        out["delta"][at] = delta
+        out["velocity"][at] = vel
+        out["force"][at] = np.sqrt(delta) * (delta + self.lam_1.take(li) * vel)
+        out["impulse"][at] = 1.0 - vel
 
 
 def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
     """delta, velocity delta', force F_c and impulse 1 - delta' of the force-free end's history.
 
     F_c = sqrt(delta) (delta + (3/2) lambda delta'). Past tau_d: delta and the force 0, the
-    velocity -e, the impulse 1 + e (as ``force_end.ForceEndSolution.history``).
+    velocity -e, the impulse 1 + e (as ``force_end.ForceEndSolution.history``). The engine's
+    history (``numerics.cheb_table_history.History.evaluate``) with this table's time maps
+    (:class:`_Maps`).
 
     Parameters
     ----------
@@ -191,74 +237,11 @@ def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
     Raises
     ------
     ValueError
-        For lambda outside the tables' range.
+        For lambda outside the tables' range, or a negative or NaN time.
     """
-    lam_b, tau_b = np.broadcast_arrays(np.asarray(lam, dtype=float), np.asarray(tau, dtype=float))
-    shape = tau_b.shape
-    if lam_b.ndim >= 1 and lam_b.shape[-1] > 1 and lam_b.strides[-1] == 0:
-        # one lambda per line of tau (a broadcast column): sort the lines, not every point
-        lu, line = np.unique(lam_b[..., 0].ravel(), return_inverse=True)
-        inv = np.repeat(line, lam_b.shape[-1])
-    else:
-        lu, inv = np.unique(lam_b.ravel(), return_inverse=True)
-    tau = tau_b.ravel()
-    v, ip, _, tl = _core(lu)
-    log = _tables()["summary"].pieces.kind["log"][ip]
-    tau_dc, tau_d = v["tau_dc"], v["tau_d"]
-    tau_p = np.where(log, np.inf, np.exp(v["log_tau_p"]))  # the plate's tau_d (builder)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        # per line constants of the recovery map: y = a (1 - sqrt(b (tau_p - tau))) (sqrt
-        # pieces) or y = (tau - tau_dc) / (tau_d - tau_dc)
-        z_end = recovery_z_end(tau_dc, tau_d, tau_p)
-        r_a = np.where(log, 1.0 / (tau_d - tau_dc), 1.0 / (1.0 - z_end))
-        r_b = np.where(log, 0.0, 1.0 / (tau_p - tau_dc))
-        c_a = 1.0 / tau_dc
-    tables = _tables()["history"]
-    coef: dict[str, tuple[npt.NDArray[np.complex128], int]] = {}
-    for name in _tables()["layout"].TIME_PIECES:
-        per, n_sub, deg, _ = tables[name]
-        coef[name] = (line_coefficients(per, ip, tl, deg, n_sub), n_sub)
-    out = field_buffers(("delta", "velocity", "force", "impulse"), tau.shape)
-    lam_1 = 1.5 * lu
-    e_end = v["e"]
-    for s0 in range(0, tau.size, BLOCK):
-        t = tau[s0:s0 + BLOCK]
-        li = inv[s0:s0 + BLOCK]
-        dc = tau_dc.take(li)
-        dd = tau_d.take(li)
-        delta = np.zeros(t.shape)
-        vel = -e_end.take(li)
-        comp = t <= dc
-        rec = ~comp & (t < dd)
-        for name, m in (("C", comp), ("R", rec)):
-            if not m.any():
-                continue
-            at = np.flatnonzero(m)
-            tt, ll = t[at], li[at]
-            rows, k = coef[name]
-            if name == "C":
-                y = np.sqrt(tt * c_a.take(ll))
-            else:
-                lg = log.take(ll)
-                # >= 0: at lambda = 0 tau_d and tau_P are the same time, each to rounding
-                gap = np.maximum(tau_p.take(ll) - tt, 0.0)
-                with np.errstate(invalid="ignore"):
-                    y_s = r_a.take(ll) * (1.0 - np.sqrt(np.where(lg, 0.0, gap) * r_b.take(ll)))
-                y = np.where(lg, (tt - dc[at]) * r_a.take(ll), y_s)
-            z = y * k
-            sub = np.minimum(np.maximum(z.astype(np.intp), 0), k - 1)
-            x = 2.0 * (z - sub) - 1.0
-            f, vv = horner_take_pair(rows, ll * k + sub, x)
-            g = np.exp(f)
-            if name == "C":
-                g *= tt
-            else:
-                g *= np.where(lg, 1.0, gap)
-            delta[at] = g
-            vel[at] = vv
-        sd = np.sqrt(delta)
-        out["delta"][s0:s0 + BLOCK] = delta
-        out["velocity"][s0:s0 + BLOCK] = vel
-        out["force"][s0:s0 + BLOCK] = sd * (delta + lam_1.take(li) * vel)
-        out["impulse"][s0:s0 + BLOCK] = 1.0 - vel
-    return {key: a.reshape(shape) for key, a in out.items()}
+    t = _tables()
+    lines = Lines.of(lam, tau)
+    t.summary.check(lines.lam, t.history.hi, t.history.what)
+    v, ip, _, tl = _core(lines.lam)
+    out = t.history.evaluate(lines, ip, tl, _Maps(lines.lam, v, t.summary.pieces.kind["log"][ip]))
+    return {key: a.reshape(lines.shape) for key, a in out.items()}

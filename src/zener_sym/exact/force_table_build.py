@@ -49,9 +49,9 @@ from ..numerics.cheb_table import TableSpec
 from ..numerics.cheb_table_build import NodeData
 from ..typing import FloatArray
 from . import table_build as _tb
-from .force_table_layout import ForceLayout, time_of
+from .force_table_layout import time_of
 
-__all__ = ["SPEC", "LAYOUT", "HISTORY", "BUILDER", "sample", "build_tables", "render", "compare",
+__all__ = ["SPEC", "HISTORY", "BUILDER", "sample", "build_tables", "render", "compare",
            "as_tables", "input_files"]
 
 #: Breakpoints of the lambda pieces (summary and history), [0, 1000].
@@ -86,9 +86,10 @@ CHECK_RTOL = 1e-9
 
 SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m", "log_int_F2",
                 "log_tau_p")
-#: The layout written into the generated table (the runtime reads it back from there).
-LAYOUT = ForceLayout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, N_SUB=N_SUB,
-                     SUMMARY_KEYS=SUMMARY_KEYS)
+#: The time pieces, in the order of time, and the tabulated history fields: f (delta's
+#: log-part) and v = delta'.
+TIME_PIECES = ("C", "R")
+HISTORY_FIELDS = ("f", "v")
 #: The table's description for the engine: sqrt(lambda) pieces below LOG_FROM, ln lambda above.
 SPEC = TableSpec.on_edges(LAM_PIECES, "sqrt_lam", LOG_FROM, SUMMARY_KEYS, N_LAM, trim=TRIM,
                           check_rtol=CHECK_RTOL, digits=15)
@@ -117,7 +118,7 @@ def node_data(lam: float, log_piece: bool) -> NodeData:
     out: NodeData = {"delta_m": s.delta_m, "tau_dc": s.tau_dc, "log_tau_d": np.log(s.tau_d),
            "log_e": np.log(s.e), "xi_over_lam": s.xi / lam, "log_F_m": np.log(s.F_m),
            "log_int_F2": np.log(s.int_F2), "log_tau_p": 0.0 if log_piece else np.log(tau_p)}
-    for piece in LAYOUT.TIME_PIECES:
+    for piece in TIME_PIECES:
         y = engine.sub_nodes(N_SUB[piece], N_TIME[piece])
         tau = time_of(piece, y, s.tau_dc, s.tau_d, tau_p, log_piece)
         h = s.history(tau.ravel())
@@ -161,21 +162,16 @@ def digest() -> str:
     return inputs_hash(input_files())
 
 
-def _layout_lines(spec: TableSpec) -> list[str]:
-    """The file's lines before its description: the time pieces' layout."""
-    return ["#: the tables' layout (zener_sym.exact.force_table_layout.ForceLayout reads it "
-            "back)", *LAYOUT.assignments()]
-
-
-#: The history: (f, v) of both time pieces, trimmed, weighed and rounded as the plate's.
+#: The history: (f, v) of both time pieces over the whole range, trimmed, weighed and rounded
+#: as the plate's.
 HISTORY = dataclasses.replace(
-    _tb.HISTORY, keys=tuple((p, k) for p in LAYOUT.TIME_PIECES for k in LAYOUT.HISTORY_KEYS),
+    _tb.HISTORY, time_pieces=TIME_PIECES, fields=HISTORY_FIELDS, n_sub=N_SUB, hi=LAM_PIECES[-1],
     note=("#: (time piece, field) -> per lambda piece, per sub-piece, one coefficient matrix",
           *_tb.HISTORY_NOTE[1:]))
 
 #: The table: ``BUILDER.build()``, ``.render()``, ``.compare()`` (the engine's methods). The
-#: anchor series ``log_tau_p`` is compared on the sqrt(lambda) pieces only (it is 0 on the
-#: others, where a relative difference is 0/0).
+#: anchor series ``log_tau_p``, stored as 0 on the ln-lambda pieces, is compared there by the
+#: engine's rule for a series that is identically zero in both tables.
 BUILDER = engine.TableBuilder(
     spec=SPEC,
     file=engine.TableFile(
@@ -186,8 +182,7 @@ BUILDER = engine.TableBuilder(
                     f"solves (exact.force_end.solve) at rtol {RTOL:g}; `zener-sym regen --check "
                     "exact-force-table` rebuilds and compares numerically."),
         summary_note="stored series -> one tuple of Chebyshev coefficients per lambda piece"),
-    sample=sample, digest=digest, history=HISTORY, head=_layout_lines,
-    skip={"log_tau_p": [p for p, (kind, _, _) in enumerate(SPEC.pieces) if kind == "log"]})
+    sample=sample, digest=digest, history=HISTORY)
 
 # the builder's methods under the names the table commands and tests call
 build_tables, render, compare = BUILDER.build, BUILDER.render, BUILDER.compare

@@ -1,41 +1,18 @@
-"""The layout of the force-free end's Chebyshev tables: lambda pieces, their variable and the
-time maps of the history.
+"""The time maps of the force-free end's Chebyshev tables.
 
-Shared by the offline builder (:mod:`zener_sym.exact.force_table_build`, which fixes the
-constants and writes them into ``generated/exact_force_table.py``) and the runtime
-(:mod:`zener_sym.exact.force_table`, which reads them back with :meth:`ForceLayout.of`), as
-:mod:`.table_layout` is for the plate's; the maps are described in the builder's docstring.
+Shared by the offline builder (:mod:`zener_sym.exact.force_table_build`) and the runtime
+(:mod:`zener_sym.exact.force_table`). The maps have no constants of their own: the generated
+file describes its lambda pieces once (``TABLE_PIECES``, ``numerics.cheb_table.TableSpec``) and
+its history once (``TIME_PIECES``, ``HISTORY_KEYS``, ``N_SUB``, ``HISTORY_TO``, written by the
+engine), so no layout class repeats them. The maps are described in the builder's docstring.
 """
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 
-from ..numerics.cheb_table import WrittenConstants
 from ..typing import FloatArray
 
-__all__ = ["ForceLayout", "recovery_z_end", "time_of"]
-
-
-@dataclasses.dataclass(frozen=True)
-class ForceLayout(WrittenConstants):
-    """The constants that fix where each coefficient of the force-end tables applies (named as
-    in the generated module)."""
-
-    #: Breakpoints of the lambda pieces (summary and history).
-    LAM_PIECES: tuple[float, ...]
-    #: Pieces starting at or above this lambda use ln(lambda) as their variable, below
-    #: sqrt(lambda).
-    LOG_FROM: float
-    #: Sub-pieces (equal parts of the reduced time y) per time piece.
-    N_SUB: dict[str, int]
-    #: The stored summary series, in order.
-    SUMMARY_KEYS: tuple[str, ...]
-    #: The time pieces, in the order of time.
-    TIME_PIECES: tuple[str, ...] = ("C", "R")
-    #: The tabulated history fields: f (delta's log-part) and v = delta'.
-    HISTORY_KEYS: tuple[str, ...] = ("f", "v")
+__all__ = ["recovery_z_end", "time_of"]
 
 
 def recovery_z_end(tau_dc: float | FloatArray, tau_d: float | FloatArray,

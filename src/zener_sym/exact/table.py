@@ -2,7 +2,7 @@
 
 The tables (``generated/exact_table.py``, built offline by :mod:`zener_sym.exact.table_build` from
 the scipy solver at rtol 1e-13) cover ``LAM_MIN <= lambda <= LAM_MAX`` (0 to 1000) for the
-summary and the history (above ``LOG_FROM`` = 5 in the variable ln lambda, from the universal
+summary and the history (from lambda = 5 on in the variable ln lambda, from the universal
 large-lambda orbit; ``HISTORY_LAM_MAX`` = ``LAM_MAX``). They are never extrapolated:
 :func:`in_range` and :func:`history_in_range` tell the caller which lambda must be integrated.
 
@@ -22,91 +22,86 @@ from __future__ import annotations
 import functools
 import importlib
 from collections.abc import Mapping
-from typing import TypedDict
+from typing import Any, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
 
-from ..numerics.blocks import BLOCK, field_buffers
-from ..numerics.cheb_table import (Index, SummaryTable, history_tables, line_coefficients,
-                                   derivative_input, log_quantity_function,
-                                   range_mask)
-from ..numerics.chebyshev import horner_take_pair
+from ..numerics.cheb_table import SummaryTable, derivative_input, spec_of
+from ..numerics.cheb_table_history import History, Index, Lines, TimeMaps
 from ..typing import FloatArray, RealArrayLike
 from . import solver as _solver
+from . import table_fields
+from .table_fields import DERIVATIVE_FIELDS, field_derivative, summary_fields
 from .table_layout import Layout
 
 __all__ = ["LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX", "SUMMARY_RTOL", "HISTORY_ATOL", "in_range",
            "history_in_range", "summary", "summary_derivative", "DERIVATIVE_FIELDS", "history",
            "log_quantity"]
 
-#: LAM_MIN, LAM_MAX (the summary tables' range) and HISTORY_LAM_MAX (where the history tables
-#: end) are read from the generated table on first use (``__getattr__``): it is the one source of
-#: the layout.
-_RANGE = ("LAM_MIN", "LAM_MAX", "HISTORY_LAM_MAX")
 #: Documented (and tested) relative error bound of every summary field.
 SUMMARY_RTOL = 1e-11
 #: Documented (and tested) error bound of the history, relative to each field's scale.
 HISTORY_ATOL = 1e-10
-#: Points per block of the history evaluation (``blocks.BLOCK``: a block's float temporaries,
-#: 64 kB each, stay in cache and below the allocator's mmap threshold).
-_BLOCK = BLOCK
-#: Lambda-piece indices and row indices.
-_Index = Index
-#: One time piece's history (``cheb_table.history_rows``): per lambda piece the monomial
-#: coefficients [time degree, lambda degree, 2 * sub-piece + field] (None without the piece),
-#: the sub-piece count, the time degree and per lambda piece the degree its coefficients need.
-_PieceLayout = tuple[list[FloatArray | None], int, int, npt.NDArray[np.int_]]
-#: What one time piece's evaluation needs (``history``): the per-line map constants, the
-#: complex coefficients per line, the sub-piece count and the degree.
-_Prep = tuple[dict[str, FloatArray], npt.NDArray[np.complex128], int, int]
 
 
-class _Tables(TypedDict):
+class _Tables(NamedTuple):
     """The generated table, arranged for evaluation (``_tables``)."""
 
+    #: The time maps' constants.
     layout: Layout
+    #: The summary series (the engine's).
     summary: SummaryTable
-    HISTORY_LAM_MAX: float
-    history: dict[str, _PieceLayout]
+    #: The history (the engine's); it ends at ``history.hi``, HISTORY_LAM_MAX.
+    history: History
+    #: Where the ln-lambda pieces start.
+    log_from: float
 
 
 @functools.cache
 def _tables() -> _Tables:
     """The generated table, loaded on first use (importing it costs ~0.1 s without a .pyc)."""
     t = importlib.import_module("zener_sym.generated.exact_table")
-    layout = Layout.of(t)  # the time pieces and maps; the lambda pieces are in TABLE_*
-    return {"layout": layout, "HISTORY_LAM_MAX": float(layout.HISTORY_TO),
-            "summary": SummaryTable.of(t, "exact table", "; integrate instead (backend='scipy')"),
-            "history": history_tables(t.HISTORY, layout.TIME_PIECES, layout.HISTORY_KEYS)}
+    return _Tables(Layout.of(t),
+                   SummaryTable.of(t, "exact table", "; integrate instead (backend='scipy')"),
+                   History.of(t, "exact history table"), spec_of(t).log_from)
 
 
 def __getattr__(name: str) -> float:
-    if name in _RANGE:
-        t = _tables()
-        s = t["summary"]
-        return {"LAM_MIN": s.lo, "LAM_MAX": s.hi, "HISTORY_LAM_MAX": t["HISTORY_LAM_MAX"]}[name]
+    """LAM_MIN, LAM_MAX (the summary's range) and HISTORY_LAM_MAX (where the history ends),
+    read from the generated table on first use: it is their one source."""
+    if name == "LAM_MIN":
+        return _tables().summary.lo
+    if name == "LAM_MAX":
+        return _tables().summary.hi
+    if name == "HISTORY_LAM_MAX":
+        return _tables().history.hi
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-#: Boolean mask: lambda inside the summary table's validated range [LAM_MIN, LAM_MAX].
-in_range = range_mask(lambda: _tables()["summary"], __name__,
-                      "the summary table's validated range [LAM_MIN, LAM_MAX]")
+def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+    """Boolean mask of lam's shape: lambda (Eq. 11) inside the summary table's validated range
+    [LAM_MIN, LAM_MAX]."""
+    return _tables().summary.in_range(lam)
 
-#: Boolean mask: lambda inside the history table's range [LAM_MIN, HISTORY_LAM_MAX].
-history_in_range = range_mask(lambda: _tables()["summary"], __name__,
-                              "the history table's range [LAM_MIN, HISTORY_LAM_MAX]",
-                              hi=lambda: _tables()["HISTORY_LAM_MAX"])
+
+def history_in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
+    """Boolean mask of lam's shape: lambda (Eq. 11) inside the history table's range
+    [LAM_MIN, HISTORY_LAM_MAX]."""
+    t = _tables()
+    return t.summary.in_range(lam, t.history.hi)
 
 
 def _core(lam: FloatArray,
-          history: bool = False) -> tuple[dict[str, FloatArray], _Index, FloatArray]:
-    """The stored series at lam (1-D) and the derived tau_d, e, tau_w0; piece index and x
-    (``history``: among the pieces with a history table)."""
+          history: bool = False) -> tuple[dict[str, FloatArray], Index, FloatArray]:
+    """The stored series at lam (1-D) and the derived tau_d, xi, e, F_m, tau_w0; piece index and
+    x (``history``: among the pieces with a history table)."""
     t = _tables()
-    v, i, x, _ = t["summary"].values(lam, t["HISTORY_LAM_MAX"] if history else None)
+    v, i, x, _ = t.summary.values(lam, t.history.hi if history else None)
     v["tau_d"] = np.exp(v["log_tau_d"])
-    v["e"] = _solver.restitution(2.0 * lam * v["int_F2"], np.exp(v["log_e"]))
+    v["xi"] = 2.0 * lam * v["int_F2"]
+    v["e"] = _solver.restitution(v["xi"], np.exp(v["log_e"]))
+    v["F_m"] = v["delta_m"] ** 1.5
     v["tau_w0"] = v["tau_dc"] + lam * v["rest_over_lam"]
     return v, i, x
 
@@ -135,16 +130,7 @@ def summary(lam: RealArrayLike) -> dict[str, FloatArray]:
     """
     lam_a = np.asarray(lam, dtype=float)
     v, _, _ = _core(lam_a)
-    tau_dr = v["tau_d"] - v["tau_dc"]
-    return {"lam": lam_a, "delta_m": v["delta_m"], "tau_dc": v["tau_dc"], "tau_d": v["tau_d"],
-            "tau_dr": tau_dr, "eta": tau_dr / v["tau_dc"], "e": v["e"],
-            "F_m": v["delta_m"] ** 1.5, "impulse": 1.0 + v["e"], "int_F2": v["int_F2"],
-            "xi": 2.0 * lam_a * v["int_F2"]}
-
-
-#: Summary fields :func:`summary_derivative` differentiates.
-DERIVATIVE_FIELDS = ("delta_m", "tau_dc", "tau_d", "tau_dr", "eta", "e", "F_m", "impulse",
-                     "int_F2", "xi")
+    return summary_fields(lam_a, v)
 
 
 def summary_derivative(lam: RealArrayLike, field: str = "e",
@@ -152,10 +138,11 @@ def summary_derivative(lam: RealArrayLike, field: str = "e",
     """d(field)/d(lambda) of the tabulated summary, from the Chebyshev series themselves.
 
     Each stored series is differentiated term by term (``chebder``) and the chain rule applied
-    through the piece's map (x linear in lambda, or in ln lambda above ``LOG_FROM``: dx/dlambda
-    = 2 / ((b - a) lambda)) and through the stored transform (tau_d = exp(log_tau_d); e as
+    through the piece's map (x linear in lambda, or in ln lambda on the ln-lambda pieces:
+    dx/dlambda = 2 / ((b - a) lambda)) and through the stored transform (tau_d = exp(log_tau_d); e as
     :func:`summary` forms it: e = sqrt(1 - xi) while xi = 2 lambda int_F2 < 1/2, else
-    exp(log_e); xi' = -2 e e' where xi >= 1/2, since there 2 int_F2 + 2 lambda int_F2' cancels).
+    exp(log_e); xi' = -2 e e' where xi >= 1/2, since there 2 int_F2 + 2 lambda int_F2' cancels:
+    ``table_fields.field_derivative``, shared with the force-free end).
     No finite differences. Measured against Richardson-extrapolated central differences of
     mpmath solves and against the small-lambda series (tests/test_exact_inverse.py): about
     1e-11 relative.
@@ -189,38 +176,19 @@ def summary_derivative(lam: RealArrayLike, field: str = "e",
                          f"'force' (the grains' force-free end)")
     lam_in, lam1 = derivative_input(lam, field, DERIVATIVE_FIELDS)
     v, i, x = _core(lam1)
-    dv = _tables()["summary"].derivatives(lam1, i, x)  # d(stored series)/d(lambda)
-    dv["tau_d"] = v["tau_d"] * dv["log_tau_d"]
-    xi = 2.0 * lam1 * v["int_F2"]
-    small = xi < 0.5
-    # below xi = 1/2 from the energy balance xi = 2 lambda int_F2 (no cancellation as
-    # lambda -> 0); above, 2 int_F2 and 2 lambda int_F2' nearly cancel (by 1e4 at lambda = 3),
-    # so xi' = -2 e e' from ln e's series. e as _core forms it (solver.restitution).
+    dv = _tables().summary.derivatives(lam1, i, x)  # d(stored series)/d(lambda)
     dxi_balance = 2.0 * v["int_F2"] + 2.0 * lam1 * dv["int_F2"]
-    de = np.where(small, -dxi_balance / (2.0 * v["e"]), v["e"] * dv["log_e"])
-    dxi = np.where(small, dxi_balance, -2.0 * v["e"] * de)
-    out: FloatArray
-    if field == "e" or field == "impulse":
-        out = de
-    elif field == "xi":
-        out = dxi
-    elif field == "F_m":
-        out = 1.5 * np.sqrt(v["delta_m"]) * dv["delta_m"]
-    elif field == "tau_dr":
-        out = dv["tau_d"] - dv["tau_dc"]
-    elif field == "eta":
-        out = (dv["tau_d"] * v["tau_dc"] - v["tau_d"] * dv["tau_dc"]) / v["tau_dc"] ** 2
-    else:
-        out = dv[field]
+    out = field_derivative(field, v, dv, dxi_balance,
+                           1.5 * np.sqrt(v["delta_m"]) * dv["delta_m"], dv["int_F2"])
     return out.reshape(lam_in.shape)
 
 
-#: (ln q, d ln q / d lambda) for the inverses: e and tau_d from their stored logs, xi =
-#: 2 lambda int_F2
-log_quantity = log_quantity_function(lambda: _tables()["summary"], __name__,
-                                     {"e": "log_e", "tau_d": "log_tau_d"},
-                                     {"xi": ("int_F2",
-                                             lambda lam, f: np.log(2.0 * lam * f))})
+def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
+    """(ln q, d ln q / d lambda) of q = e, tau_d or xi (xi = 2 lambda int_F2) for :mod:`.inverse`, from the one
+    series q needs: ``table_fields.log_quantity`` on this table (ValueError for another q or a
+    lambda outside the range)."""
+    return table_fields.log_quantity(_tables().summary, lam, quantity, "int_F2",
+                                     lambda lam1, s: np.log(2.0 * lam1 * s))
 
 
 def _scaled_maps(name: str, k: int, lu: FloatArray, log: npt.NDArray[np.bool_],
@@ -233,7 +201,8 @@ def _scaled_maps(name: str, k: int, lu: FloatArray, log: npt.NDArray[np.bool_],
         return {"a": k * k / v["tau_dc"]}
     if name == "B":
         return {"a": k * k / (v["tau_d"] - v["tau_w0"]), "d": v["tau_d"]}
-    params = _tables()["layout"].map_params(name, lu, log, v["tau_dc"], tau_s, v["tau_w0"])
+    t = _tables()
+    params = t.layout.map_params(name, lu, log, v["tau_dc"], tau_s, v["tau_w0"], t.log_from)
     start, end, c1, c2, c3 = (np.broadcast_to(np.asarray(q, dtype=float), lu.shape)
                               for q in params)
     with np.errstate(invalid="ignore", divide="ignore"):  # lines without this piece: unused
@@ -248,7 +217,7 @@ def _scaled_maps(name: str, k: int, lu: FloatArray, log: npt.NDArray[np.bool_],
 
 
 def _reduced_time(name: str, m: Mapping[str, FloatArray], t: FloatArray,
-                  li: _Index) -> tuple[FloatArray, FloatArray | None]:
+                  li: Index) -> tuple[FloatArray, FloatArray | None]:
     """z = k y, the reduced time of piece ``name`` times its sub-piece count, at times t on the
     lines li (``_scaled_maps``' constants gathered per point), and d = tau_d on the lines (piece
     B's factor, None elsewhere)."""
@@ -276,139 +245,93 @@ def _reduced_time(name: str, m: Mapping[str, FloatArray], t: FloatArray,
     return z, None
 
 
-def _piece_values(name: str, prep: _Prep, t: FloatArray, li: _Index,
-                  lu: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """delta and the impulse at times t (all in time piece ``name``) on the lines li."""
-    m, cT, k, nd = prep
-    z, d = _reduced_time(name, m, t, li)
-    sub = z.astype(np.intp)  # z >= 0: truncation is floor
-    if sub.min() < 0:  # a NaN or a point outside its piece: never index a wrong row
-        raise RuntimeError(f"exact history table: reduced time out of range in piece "
-                           f"{name} (lambda {lu[li[sub < 0][0]]!r}); this is a bug")
-    np.minimum(sub, k - 1, out=sub)
-    x = z - sub
-    x *= 2.0
-    x -= 1.0
-    sub += li * k  # the point's row: line, sub-piece
-    f, i = horner_take_pair(cT[:nd], sub, x)
-    g = np.ascontiguousarray(f)  # exp is vectorized on contiguous data only
-    np.exp(g, out=g)
-    if name == "C":
-        g *= t
-    elif name == "B":
-        assert d is not None  # piece B's factor tau_d (_reduced_time)
-        d -= t
-        g *= d
-    return g, i
+class _Maps(TimeMaps):
+    """The plate's time maps on the distinct lambdas of one ``history`` call (``lu``: their
+    summary ``v``, ln-lambda flags ``log`` and tau_s): the time pieces (C, A, M, B, then past
+    the contact), each piece's reduced time and the back-transform delta = tau exp(f) (C),
+    exp(f) (A, M), (tau_d - tau) exp(f) (B), with the impulse I stored as itself."""
+
+    fields = ("delta", "impulse", "velocity", "force")
+
+    def __init__(self, lu: FloatArray, v: dict[str, FloatArray], log: npt.NDArray[np.bool_],
+                 tau_s: FloatArray) -> None:
+        self.lu, self.v, self.log, self.tau_s = lu, v, log, tau_s
+        self.imp_end = 1.0 + v["e"]  # after the contact the impulse keeps its final value
+
+    def piece_of(self, lines: Lines) -> npt.NDArray[np.int8]:
+        """0 C, 1 A, 2 M (empty on the lambda pieces, tau_s = tau_w0), 3 B, 4 after the contact:
+        (1 + [tau >= tau_s] + [tau >= tau_w0] + [tau >= tau_d]) [tau > tau_dc], the last factor
+        keeping tau = tau_dc in C where the pieces between are empty (lambda = 0: all bounds
+        equal)."""
+        v = self.v
+        t2, b = lines.per_point((self.tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"]))
+        piece = (t2 >= b[0]).view(np.int8)
+        piece += t2 >= b[1]
+        piece += t2 >= b[2]
+        piece += 1
+        piece *= t2 > b[3]
+        return piece.ravel()
+
+    def constants(self, name: str, k: int) -> dict[str, FloatArray]:
+        return _scaled_maps(name, k, self.lu, self.log, self.v, self.tau_s)
+
+    def reduced_time(self, name: str, m: Any, t: FloatArray,
+                     li: Index) -> tuple[FloatArray, FloatArray | None]:
+        return _reduced_time(name, m, t, li)
+
+    def store(self, name: str, f: FloatArray, g: FloatArray, t: FloatArray, li: Index, aux: Any,
+              out: dict[str, FloatArray], at: Index) -> None:
+        d = np.ascontiguousarray(f)  # exp is vectorized on contiguous data only
+        np.exp(d, out=d)
+        if name == "C":
+            d *= t
+        elif name == "B":
+            aux -= t  # piece B's factor tau_d - tau (_reduced_time's d, a temporary)
+            d *= aux
+        out["delta"][at] = d
+        out["impulse"][at] = g
+        force = np.sqrt(d)
+        force *= d
+        out["force"][at] = force
+        out["velocity"][at] = 1.0 - g
+
+    def after(self, out: dict[str, FloatArray], at: Index, li: Index) -> None:
+        imp = self.imp_end.take(li, mode="clip")
+        out["delta"][at] = 0.0
+        out["force"][at] = 0.0
+        out["impulse"][at] = imp
+        out["velocity"][at] = 1.0 - imp
 
 
 def history(lam: RealArrayLike, tau: RealArrayLike) -> dict[str, FloatArray]:
     """delta, impulse, velocity (1 - I) and force (delta^{3/2}) at (lam, tau), same shapes.
 
-    The lambda direction is contracted once per distinct lambda and time piece; each time point
-    then costs its piece's map, one polynomial of degree <= 15 per field (Horner) and an
-    exponential. The points of each time piece are evaluated in blocks of ``_BLOCK``: per-point
-    temporaries as large as the grid cost more in fresh memory (page faults, and time that
-    depends on how the allocator was last used) than in arithmetic. When lambda is a broadcast
-    column (one lambda per line of tau), points are assigned to lines and pieces by
-    broadcasting against each line's bounds, without a per-point sort.
+    The engine's history (``numerics.cheb_table_history.History.evaluate``: distinct lambdas,
+    the lambda contraction once per distinct lambda and time piece, blocks of points, the
+    sub-piece lookup and Horner's rule, one polynomial of degree <= 15 per field) with this
+    table's time maps (:class:`_Maps`): each time point costs its piece's map, the two
+    polynomials and an exponential.
 
     Parameters
     ----------
     lam, tau : array_like
-        lambda (Eq. 11) in [LAM_MIN, HISTORY_LAM_MAX] and times >= 0, already broadcast to one
-        shape.
+        lambda (Eq. 11) in [LAM_MIN, HISTORY_LAM_MAX] and times >= 0, broadcast together.
 
     Returns
     -------
     dict of str to ndarray
-        "delta", "impulse", "velocity", "force", each of that shape.
+        "delta", "impulse", "velocity", "force", each of the broadcast shape.
 
     Raises
     ------
     ValueError
-        For lambda outside the history table's range.
+        For lambda outside the history table's range, or a negative or NaN time.
     """
-    lam_a = np.asarray(lam, dtype=float)
-    tau_a = np.asarray(tau, dtype=float)
-    shape = tau_a.shape
-    n_col = None  # points per line of tau when lambda is one column (a line each)
-    if lam_a.ndim >= 1 and lam_a.shape[-1] > 1 and np.array_equal(
-            lam_a, np.broadcast_to(lam_a[..., :1], lam_a.shape)):
-        # one lambda per line of tau (a broadcast column): sort the lines, not every point
-        lu, line = np.unique(lam_a[..., 0].ravel(), return_inverse=True)
-        n_col = lam_a.shape[-1]
-    else:
-        lu, inv = np.unique(lam_a.ravel(), return_inverse=True)
-    _tables()["summary"].check(lu, _tables()["HISTORY_LAM_MAX"], "exact history table")
-    tau_f = tau_a.ravel()
-    v, ip, xl = _core(lu, history=True)
-    log = _tables()["summary"].pieces.kind["log"][ip]
-    lay = _tables()["layout"]
-    tau_s = lay.split_time(lu, log, v["tau_dc"], v["tau_w0"])
-    piece = _time_piece(tau_f, (tau_s, v["tau_w0"], v["tau_d"], v["tau_dc"]),
-                        line if n_col is not None else inv, n_col)
-    out = field_buffers(("delta", "impulse", "velocity", "force"), tau_f.shape)
-    layout = _tables()["history"]
-    k_max = max(c.shape[1] for per, *_ in layout.values() for c in per if c is not None)
-    tl_all = np.asarray(np.polynomial.chebyshev.chebvander(xl, k_max - 1), dtype=float)
-    imp_end = 1.0 + v["e"]  # after the contact the impulse keeps its final value
-    prep: _Prep | None = None
-    for n, name in enumerate((*lay.TIME_PIECES, None)):
-        if name is not None:
-            if not np.any(piece == n):
-                continue
-            per, k, deg, need = layout[name]
-            prep = (_scaled_maps(name, k, lu, log, v, tau_s), line_coefficients(
-                per, ip, tl_all, deg, k), k, int(need[ip].max()))
-        # the piece's points, found chunk by chunk of the grid (no index array of the grid's
-        # size: the call's peak memory decides whether glibc keeps it for the next call)
-        for c0 in range(0, tau_f.size, 4 * _BLOCK):
-            at_chunk = np.flatnonzero(piece[c0:c0 + 4 * _BLOCK] == n)
-            at_chunk += c0
-            for s in range(0, at_chunk.size, _BLOCK):
-                at = at_chunk[s:s + _BLOCK]
-                li = line.take(at // n_col, mode="clip") if n_col is not None else inv.take(
-                    at, mode="clip")
-                if name is None:
-                    out["delta"][at] = 0.0
-                    out["impulse"][at] = imp_end.take(li, mode="clip")
-                else:
-                    assert prep is not None  # made above for this piece
-                    out["delta"][at], out["impulse"][at] = _piece_values(
-                        name, prep, tau_f.take(at, mode="clip"), li, lu)
-        prep = None  # freed before the next piece's coefficients are made
-    _derived_fields(out)
-    return {key: a.reshape(shape) for key, a in out.items()}
-
-
-def _time_piece(tau: FloatArray, bounds: tuple[FloatArray, ...], index: _Index,
-                n_col: int | None) -> npt.NDArray[np.int8]:
-    """The time piece of each point (int8, flat): 0 C, 1 A, 2 M (empty for lambda <= LOG_FROM,
-    tau_s = tau_w0), 3 B, 4 after the contact, from the bounds (tau_s, tau_w0, tau_d, tau_dc)
-    per distinct lambda; ``index`` maps lines (when ``n_col`` points share a lambda per line)
-    or points to their lambda."""
-    if n_col is not None:  # per-line bounds broadcast along each line: no gather per point
-        t2 = tau.reshape(len(index), n_col)
-        b = [q[index, None] for q in bounds]
-    else:
-        t2 = tau
-        b = [q.take(index, mode="clip") for q in bounds]
-    # (1 + [tau >= tau_s] + [tau >= tau_w0] + [tau >= tau_d]) [tau > tau_dc]: the last factor
-    # keeps tau = tau_dc in C where the pieces between are empty (lambda = 0: all bounds equal)
-    piece = (t2 >= b[0]).view(np.int8)
-    piece += t2 >= b[1]
-    piece += t2 >= b[2]
-    piece += 1
-    piece *= t2 > b[3]
-    return piece.ravel()
-
-
-def _derived_fields(out: dict[str, FloatArray]) -> None:
-    """force = delta^{3/2} and velocity = 1 - impulse, in place, block by block (per-point
-    temporaries stay cache-sized, as in ``history``)."""
-    for s in range(0, out["delta"].size, _BLOCK):
-        d, f = out["delta"][s:s + _BLOCK], out["force"][s:s + _BLOCK]
-        np.sqrt(d, out=f)
-        f *= d
-        np.subtract(1.0, out["impulse"][s:s + _BLOCK], out=out["velocity"][s:s + _BLOCK])
+    t = _tables()
+    lines = Lines.of(lam, tau)
+    t.summary.check(lines.lam, t.history.hi, t.history.what)
+    v, ip, xl = _core(lines.lam, history=True)
+    log = t.summary.pieces.kind["log"][ip]
+    tau_s = t.layout.split_time(lines.lam, log, v["tau_dc"], v["tau_w0"])
+    out = t.history.evaluate(lines, ip, t.history.basis(xl), _Maps(lines.lam, v, log, tau_s))
+    return {key: a.reshape(lines.shape) for key, a in out.items()}

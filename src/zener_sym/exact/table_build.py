@@ -98,7 +98,7 @@ MATCH_DECAYS = 40.0
 #: Chebyshev points per lambda piece.
 N_LAM = 22
 #: Sub-pieces (equal parts of the reduced time y) per time piece; piece M exists on the ln-lambda
-#: pieces only (see ``Layout.split_time``).
+#: pieces only (see ``Layout.split_time``). Written into the file by the engine (``HISTORY``).
 N_SUB = {"C": 12, "A": 16, "M": 16, "B": 12}
 #: Chebyshev points per sub-piece of each time piece: low degrees keep the evaluation cheap
 #: (each degree costs one pass over the points), more sub-pieces keep the accuracy.
@@ -136,10 +136,13 @@ HISTORY_NOTE = (
     "#: (time piece, field) -> per lambda piece up to HISTORY_TO, per sub-piece, one",
     "#: coefficient matrix [time degree][lambda degree] as the string \"rows cols values...\"",
     "#: (zener_sym.numerics.cheb_table.parse_array)")
-#: The layout the runtime reads back from the generated table (``table_layout.Layout.of``).
-LAYOUT = Layout(LAM_PIECES=LAM_PIECES, LOG_FROM=LOG_FROM, HISTORY_TO=HISTORY_TO,
-                C_STRETCH=C_STRETCH, C_END=C_END, S_ORBIT=S_ORBIT, S_TRANSIENT=S_TRANSIENT,
-                N_SUB=N_SUB)
+#: The time maps' constants the runtime reads back from the generated table
+#: (``table_layout.Layout.of``); the pieces are the description's (``SPEC``, ``HISTORY``).
+LAYOUT = Layout(C_STRETCH=C_STRETCH, C_END=C_END, S_ORBIT=S_ORBIT, S_TRANSIENT=S_TRANSIENT)
+#: The time pieces, in the order of time (a point's piece index counts in this order).
+TIME_PIECES = ("C", "A", "M", "B")
+#: The tabulated history fields: f (delta's log-part) and the impulse I.
+HISTORY_FIELDS = ("f", "I")
 #: The table's description for the engine: lambda pieces (in lambda below LOG_FROM, in ln lambda
 #: above), the stored series, points per piece, trimming and ``--check`` tolerance.
 SPEC = TableSpec.on_edges(LAM_PIECES, "lam", LOG_FROM, SUMMARY_KEYS, N_LAM, trim=TRIM,
@@ -356,11 +359,11 @@ def _history_samples(hist: HistoryFunction, tau_dc: float, tau_w0: float, tau_d:
     """{(piece, "f"/"I"): [sub, point]} from hist(tau) -> (delta, w) at the sub-pieces' nodes."""
     tau_s = float(LAYOUT.split_time(lam, log_piece, tau_dc, tau_w0))
     out: NodeData = {}
-    for piece in LAYOUT.TIME_PIECES:
+    for piece in TIME_PIECES:
         if piece == "M" and not log_piece:
             continue
         params = tuple(float(c) for c in LAYOUT.map_params(piece, lam, log_piece, tau_dc, tau_s,
-                                                           tau_w0))
+                                                           tau_w0, LOG_FROM))
         y = sub_nodes(piece)
         tau = time_nodes(piece, y, tau_dc, tau_w0, tau_d, params)
         d, w = hist(tau.ravel())
@@ -475,21 +478,24 @@ def engine_files() -> list[pathlib.Path]:
     Returns
     -------
     list of pathlib.Path
-        ``numerics/cheb_table.py`` and ``numerics/cheb_table_build.py``.
+        ``numerics/cheb_table.py``, ``numerics/cheb_table_build.py`` and
+        ``numerics/cheb_table_history.py``.
     """
     numerics = pathlib.Path(engine.__file__).resolve().parent
-    return [numerics / "cheb_table.py", numerics / "cheb_table_build.py"]
+    return [numerics / "cheb_table.py", numerics / "cheb_table_build.py",
+            numerics / "cheb_table_history.py"]
 
 
 def _layout_lines(spec: TableSpec) -> list[str]:
-    """The file's lines before its description: the time pieces' layout."""
-    return ["#: the tables' layout (zener_sym.exact.table_layout.Layout reads it back)",
+    """The file's lines before its description: the time maps' constants."""
+    return ["#: the time maps' constants (zener_sym.exact.table_layout.Layout reads them back)",
             *LAYOUT.assignments()]
 
 
-#: The history: both fields of every time piece, trimmed and rounded on the field's scale.
+#: The history: both fields of every time piece up to HISTORY_TO, trimmed and rounded on the
+#: field's scale.
 HISTORY = engine.HistorySettings(
-    keys=tuple((p, k) for p in LAYOUT.TIME_PIECES for k in LAYOUT.HISTORY_KEYS),
+    time_pieces=TIME_PIECES, fields=HISTORY_FIELDS, n_sub=N_SUB, hi=HISTORY_TO,
     trim=HISTORY_TRIM, quantum=HISTORY_QUANTUM, weight=history_weight, note=HISTORY_NOTE)
 
 #: The table: ``BUILDER.build()``, ``.render()``, ``.compare()`` (the engine's methods).

@@ -1,10 +1,14 @@
-"""The layout of the exact Chebyshev tables: lambda pieces, time pieces and their time maps.
+"""The time maps of the exact Chebyshev tables (the plate's end of contact).
 
-One description shared by the offline builder (:mod:`zener_sym.exact.table_build`, which fixes
-the constants and writes them into ``generated/exact_table.py``) and the runtime evaluator
+The constants of the maps are shared by the offline builder (:mod:`zener_sym.exact.table_build`,
+which fixes them and writes them into ``generated/exact_table.py``) and the runtime evaluator
 (:mod:`zener_sym.exact.table`, which reads them back from that file with :meth:`Layout.of`): the
 generated table is the single source of the constants the runtime uses, and the runtime never
-imports the builder. The time pieces and their maps are described in the builder's docstring.
+imports the builder. The file describes its lambda pieces once, in ``TABLE_PIECES``
+(``numerics.cheb_table.TableSpec``: the ln-lambda pieces start at its ``log_from``), and its
+history once (``HISTORY_TO``, ``TIME_PIECES``, ``HISTORY_KEYS``, ``N_SUB``: the engine's
+``numerics.cheb_table_history``); this class holds only the maps' own constants. The time
+pieces and their maps are described in the builder's docstring.
 """
 from __future__ import annotations
 
@@ -21,44 +25,33 @@ __all__ = ["Layout", "lin_log", "parse_array"]  # parse_array: the engine's, nam
 
 @dataclasses.dataclass(frozen=True)
 class Layout(WrittenConstants):
-    """The constants that fix where each coefficient of the exact tables applies.
+    """The constants of the exact tables' time maps (beyond the description of their pieces).
 
     Field names are the names the generated table module uses for them.
     """
 
-    #: Breakpoints of the lambda pieces.
-    LAM_PIECES: tuple[float, ...]
-    #: Pieces starting at or above this lambda use ln(lambda) as their Chebyshev variable.
-    LOG_FROM: float
-    #: The history tables end here.
-    HISTORY_TO: float
     #: Time scale of piece A's logarithmic stretch at tau_dc (see the builder).
     C_STRETCH: float
-    #: lambda <= LOG_FROM: piece A's logarithmic stretch at tau_w0 has time scale C_END (1 + lambda).
+    #: lambda on a lambda piece: piece A's logarithmic stretch at tau_w0 has time scale
+    #: C_END (1 + lambda).
     C_END: float
-    #: lambda > LOG_FROM: tau_s = tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)).
+    #: lambda on a ln-lambda piece: tau_s = tau_dc + lambda (S_ORBIT + S_TRANSIENT lambda^(-5/3)).
     S_ORBIT: float
     S_TRANSIENT: float
-    #: Sub-pieces (equal parts of the reduced time y) per time piece.
-    N_SUB: dict[str, int]
-    #: The time pieces, in the order of time (a point's piece index counts in this order).
-    TIME_PIECES: tuple[str, ...] = ("C", "A", "M", "B")
-    #: The tabulated history fields: f (delta's log-part) and the impulse I.
-    HISTORY_KEYS: tuple[str, ...] = ("f", "I")
 
     def split_time(self, lam: RealArrayLike, log_piece: bool | npt.NDArray[np.bool_],
                    tau_dc: float | FloatArray, tau_w0: float | FloatArray) -> FloatArray:
         """tau_s, the end of time piece A and the start of piece M.
 
-        tau_w0 for lambda <= LOG_FROM (no piece M), tau_dc + lambda (S_ORBIT + S_TRANSIENT
-        lambda^(-5/3)) above.
+        tau_w0 on the lambda pieces (no piece M), tau_dc + lambda (S_ORBIT + S_TRANSIENT
+        lambda^(-5/3)) on the ln-lambda pieces.
 
         Parameters
         ----------
         lam : array_like
             lambda (Eq. 11).
         log_piece : bool or ndarray of bool
-            Whether lambda lies on a ln-lambda piece (above LOG_FROM).
+            Whether lambda lies on a ln-lambda piece.
         tau_dc, tau_w0 : float or ndarray
             End of compression and the time where w = 1 - I vanishes.
 
@@ -75,7 +68,7 @@ class Layout(WrittenConstants):
 
     def map_params(self, piece: str, lam: RealArrayLike, log_piece: bool | npt.NDArray[np.bool_],
                    tau_dc: float | FloatArray, tau_s: float | FloatArray,
-                   tau_w0: float | FloatArray) -> tuple[float | FloatArray, ...]:
+                   tau_w0: float | FloatArray, log_from: float) -> tuple[float | FloatArray, ...]:
         """(start, end, c1, c2, c3) of the logarithmic-linear map ``lin_log`` of piece A or M.
 
         Parameters
@@ -88,6 +81,9 @@ class Layout(WrittenConstants):
             Whether lambda lies on a ln-lambda piece.
         tau_dc, tau_s, tau_w0 : float or ndarray
             End of compression, ``split_time`` and the time where w vanishes.
+        log_from : float
+            Where the ln-lambda pieces start (``TableSpec.log_from``): piece A's stretch there
+            is C_STRETCH.
 
         Returns
         -------
@@ -99,7 +95,7 @@ class Layout(WrittenConstants):
         if piece == "A":
             with np.errstate(divide="ignore"):
                 c1 = self.C_STRETCH * np.where(
-                    log_piece, (self.LOG_FROM / np.where(log_piece, lam_a, 1.0)) ** (2.0 / 3.0),
+                    log_piece, (log_from / np.where(log_piece, lam_a, 1.0)) ** (2.0 / 3.0),
                     1.0)
             return tau_dc, tau_s, c1, np.where(log_piece, inf, self.C_END * (1.0 + lam_a)), inf
         return tau_s, tau_w0, inf, lam_a, lam_a

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import functools
 import importlib
+import warnings
 
 import numpy as np
 import numpy.typing as npt
@@ -25,7 +26,7 @@ import numpy.typing as npt
 from ..numerics.cheb_table import Pieces, SummaryTable
 from ..typing import FloatArray, RealArrayLike
 
-__all__ = ["SUMMARY_RTOL", "in_range", "summary", "lam_max", "variable_ends"]
+__all__ = ["LAM_MIN", "LAM_MAX", "SUMMARY_RTOL", "in_range", "summary", "variable_ends"]
 
 #: Documented (and tested) relative error bound of every ham1 summary field.
 SUMMARY_RTOL = 1e-11
@@ -61,17 +62,30 @@ def variable_ends(kind: str, a: float, b: float) -> tuple[float, float]:
 def _tables() -> SummaryTable:
     """The generated table (the one source of its pieces and fields), loaded on first use."""
     t = importlib.import_module("zener_sym.generated.ham1_table")
-    return SummaryTable.of(t, "ham1 table", summary_name="COEF", top_open=True)
+    return SummaryTable.of(t, "ham1 table", top_open=True)
+
+
+def __getattr__(name: str) -> float:
+    """LAM_MIN and LAM_MAX, the table's range 0 <= lambda < LAM_MAX = lam_crit (Eq. 81,
+    2.4424389...; lambda itself must stay below it), read from the generated table on first
+    use, as the exact tables' ranges are."""
+    if name == "LAM_MIN":
+        return _tables().lo
+    if name == "LAM_MAX":
+        return _tables().hi
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def lam_max() -> float:
-    """Upper end of the table (lam_crit; lambda itself must stay below it).
+    """Upper end of the table: deprecated, use ``LAM_MAX`` (the exact tables' name).
 
     Returns
     -------
     float
         lam_crit (Eq. 81), 2.4424389...
     """
+    warnings.warn("zener_sym.ham.table.lam_max() is deprecated; use zener_sym.ham.table.LAM_MAX "
+                  "(the range's name in every table module)", DeprecationWarning, stacklevel=2)
     return _tables().hi
 
 

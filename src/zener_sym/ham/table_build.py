@@ -240,8 +240,7 @@ def _lam_cont_lines(sp: TableSpec) -> list[str]:
             f"LAM_CONT = {float(sp.pieces[-1][1]):.17g}"]
 
 
-#: The table: ``BUILDER.build()``, ``.render()``, ``.compare()`` (the engine's methods); the
-#: pieces are written once more, after the summary, under the name older readers use.
+#: The table: ``BUILDER.build()``, ``.render()``, ``.compare()`` (the engine's methods).
 BUILDER = engine.TableBuilder(
     spec=description,
     file=engine.TableFile(
@@ -251,9 +250,8 @@ BUILDER = engine.TableBuilder(
         provenance=("Built by zener_sym.ham.table_build from the float64 ham1 summary "
                     "(zener_sym.ham.spectral.summary_numpy); `zener-sym regen --check ham1-table` "
                     "rebuilds and compares numerically (the node values come from floating-point "
-                    "root finding and quadrature)."), summary_name="COEF"),
-    sample=sample, digest=digest, head=_lam_cont_lines,
-    tail=("#: (kind, start, end) per lambda piece (TABLE_PIECES)", "PIECES = TABLE_PIECES"))
+                    "root finding and quadrature).")),
+    sample=sample, digest=digest, head=_lam_cont_lines)
 
 # the builder's methods under the names the table commands and tests call
 build_tables, render, compare = BUILDER.build, BUILDER.render, BUILDER.compare

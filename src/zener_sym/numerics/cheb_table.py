@@ -7,9 +7,9 @@ per piece), the trimming level and the ``--check`` tolerance. The kind of a piec
 Chebyshev variable g (:data:`PIECE_KINDS`): lambda, ln lambda, sqrt(lambda) or
 sqrt(lambda - start). The plate's end of contact (``exact.table``), the force-free end
 (``exact.force_table``) and the ham1 summary (``ham.table``) are instances: each loads its
-generated module into a :class:`SummaryTable` (and, for the exact tables, a history made of
-:func:`history_rows` and :func:`line_coefficients`) and keeps only what is its own (the derived
-fields, the time maps of its history). The offline side is :mod:`.cheb_table_build`.
+generated module into a :class:`SummaryTable` (and, for the exact tables, a
+:class:`~.cheb_table_history.History`, the engine's history part) and keeps only what is its own
+(the derived fields, the time maps of its history). The offline side is :mod:`.cheb_table_build`.
 
 Arithmetic is in a fixed order (the series summed term by term, the lambda contraction one
 matrix product per piece), so each lambda's value does not depend on how many others are
@@ -18,25 +18,25 @@ evaluated with it.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any, TypeVar
 
 import numpy as np
 import numpy.typing as npt
 
 from ..typing import FloatArray, RealArrayLike
-from .chebyshev import cheb_to_monomial
+# the history's part of the engine, named here too (their public import path)
+from .cheb_table_history import (HistoryPiece, Index, history_rows, history_tables,
+                                 line_coefficients, parse_array)
 
-__all__ = ["PIECE_KINDS", "TableSpec", "Pieces", "SummaryTable", "range_mask", "parse_array", "history_rows",
-           "history_tables", "line_coefficients", "spec_assignments", "spec_of", "WrittenConstants",
-           "log_quantity_function", "derivative_input"]
+__all__ = ["PIECE_KINDS", "TableSpec", "Pieces", "SummaryTable", "parse_array", "history_rows",
+           "history_tables", "line_coefficients", "HistoryPiece", "spec_assignments", "spec_of",
+           "WrittenConstants", "derivative_input"]
 
 #: The Chebyshev variable g of a lambda piece [start, end], by kind.
 PIECE_KINDS = {"lam": "lambda", "log": "ln lambda", "sqrt_lam": "sqrt(lambda)",
                "sqrt": "sqrt(lambda - start)"}
 
-#: Piece indices.
-Index = npt.NDArray[np.intp]
 _W = TypeVar("_W", bound="WrittenConstants")
 
 
@@ -152,6 +152,12 @@ class TableSpec:
     def edges(self) -> tuple[float, ...]:
         """The breakpoints: every piece's start and the last piece's end."""
         return (*(float(a) for _, a, _ in self.pieces), float(self.pieces[-1][2]))
+
+    @property
+    def log_from(self) -> float:
+        """Where the ln-lambda pieces start (infinite without one): the exact tables' switch
+        to their large-lambda form."""
+        return min((float(a) for k, a, _ in self.pieces if k == "log"), default=float("inf"))
 
     def kind_of(self, start: float) -> str:
         """The kind of Chebyshev variable of the piece that starts at ``start``.
@@ -410,25 +416,24 @@ class SummaryTable:
         self.lo, self.hi = float(self.pieces.edges[0]), float(self.pieces.edges[-1])
 
     @classmethod
-    def of(cls, module: Any, what: str, hint: str = "", summary_name: str = "SUMMARY",
-           top_open: bool = False) -> "SummaryTable":
+    def of(cls, module: Any, what: str, hint: str = "", top_open: bool = False) -> "SummaryTable":
         """The summary of a generated table module, with the description written into it.
 
         Parameters
         ----------
-        module : module
-            The generated table module (``TABLE_*`` and the summary series).
+        module : module or mapping
+            The generated table module (``TABLE_*`` and the series, ``SUMMARY``), or its
+            globals.
         what, hint, top_open
             As for the constructor.
-        summary_name : str
-            The name the series are assigned to.
 
         Returns
         -------
         SummaryTable
         """
         spec = spec_of(module)
-        return cls(spec.pieces, spec.fields, getattr(module, summary_name), what, hint, top_open)
+        ns = module if isinstance(module, Mapping) else vars(module)
+        return cls(spec.pieces, spec.fields, ns["SUMMARY"], what, hint, top_open)
 
     def in_range(self, lam: RealArrayLike, hi: float | None = None) -> npt.NDArray[np.bool_]:
         """Boolean mask: lambda inside the range [lo, hi] ([lo, hi) for an open top).
@@ -502,216 +507,6 @@ class SummaryTable:
         val = _one_series_sum(tl, self.coef[:, :, k], i)
         der = _one_series_sum(tl, self.dcoef[:, :, k], i)
         return val, der * self.pieces.dx_dlam(lam, i)
-
-
-def parse_array(text: str) -> FloatArray:
-    """The 2-D array written as the string "rows cols v v ..." (the history coefficients).
-
-    Parameters
-    ----------
-    text : str
-        "rows cols" then rows * cols numbers, separated by spaces.
-
-    Returns
-    -------
-    ndarray
-        [rows, cols].
-    """
-    v = np.array(text.split(), dtype=float)
-    return v[2:].reshape(int(v[0]), int(v[1]))
-
-
-def history_rows(mats: Sequence[Sequence[Sequence[str | RealArrayLike]]],
-                 ) -> tuple[list[FloatArray | None], int, int, npt.NDArray[np.int_]]:
-    """One time piece's history arranged for :func:`line_coefficients`.
-
-    Per lambda piece an array [time degree, lambda degree, 2 * sub-piece + field] (two fields,
-    zero-padded to the time piece's largest degree, trimmed in lambda degree to the last
-    nonzero), so the lambda contraction gives per line the pairs (field 0, field 1) next to each
-    other, read as one complex128 per sub-piece by ``chebyshev.horner_take_pair``. The time
-    direction is converted from Chebyshev to monomial coefficients in the sub-piece's x
-    (Horner's rule: fewer passes over the points than Clenshaw's; on a sub-piece the
-    coefficients fall fast, so the conversion loses no digits that matter).
-
-    Parameters
-    ----------
-    mats : sequence
-        Per field (two), per lambda piece, per sub-piece one [time degree, lambda degree]
-        Chebyshev matrix (an array or its "rows cols v..." string); a lambda piece without this
-        time piece has no sub-pieces.
-
-    Returns
-    -------
-    tuple
-        Per lambda piece the array (None without the piece), the sub-piece count, the time
-        degree and per lambda piece the degree its own coefficients need (Horner starts there).
-    """
-    arrs = [[[parse_array(c) if isinstance(c, str) else np.asarray(c, dtype=float) for c in subs]
-             for subs in per] for per in mats]
-    n_lam = len(arrs[0])
-    n_sub = max(len(subs) for per in arrs for subs in per)
-    flat = [c for per in arrs for subs in per for c in subs]
-    deg, n_k = max(c.shape[0] for c in flat), max(c.shape[1] for c in flat)
-    conv = cheb_to_monomial(deg)  # monomial = conv @ Chebyshev
-    fields = []
-    for per in arrs:
-        a = np.zeros((n_lam, n_sub, deg, n_k))  # [lambda piece, sub, j, k]
-        for p, subs in enumerate(per):
-            for s, c in enumerate(subs):
-                a[p, s, : c.shape[0], : c.shape[1]] = c
-        fields.append(np.einsum("ij,psjk->psik", conv, a))
-    blk = np.stack(fields, axis=2)  # [lambda piece, sub, field, degree, k]
-    rows: list[FloatArray | None] = []
-    for p in range(n_lam):
-        if not len(arrs[0][p]):
-            rows.append(None)
-            continue
-        b = blk[p]
-        nz = np.flatnonzero(np.any(b != 0.0, axis=(0, 1, 2)))
-        k = int(nz.max()) + 1 if nz.size else 1
-        rows.append(np.ascontiguousarray(b[..., :k].transpose(2, 3, 0, 1).reshape(deg, k,
-                                                                                   2 * n_sub)))
-    need = np.array([max([c.shape[0] for per in arrs for c in per[p]] or [1])
-                     for p in range(n_lam)])
-    return rows, n_sub, deg, need
-
-
-def history_tables(history: Mapping[tuple[str, str], Any], time_pieces: Sequence[str],
-                   keys: Sequence[str]) -> dict[str, tuple[list[FloatArray | None], int, int,
-                                                          npt.NDArray[np.int_]]]:
-    """``history_rows`` of every time piece of a generated module's HISTORY.
-
-    Parameters
-    ----------
-    history : mapping
-        (time piece, field) -> per lambda piece, per sub-piece, a matrix string.
-    time_pieces : sequence of str
-        The time pieces.
-    keys : sequence of str
-        The two fields, in the order of the pair (real part first).
-
-    Returns
-    -------
-    dict
-        time piece -> ``history_rows``' result.
-    """
-    return {piece: history_rows([history[(piece, k)] for k in keys]) for piece in time_pieces}
-
-
-def line_coefficients(rows: Sequence[FloatArray | None], ip: Index, tl: FloatArray, deg: int,
-                      n_sub: int) -> npt.NDArray[np.complex128]:
-    """[time degree, line * sub-piece], complex: one time piece's monomial coefficients per
-    line (real part field 0's, imaginary part field 1's), sum_k C[j, k, 2 s + field] T_k(x).
-
-    Parameters
-    ----------
-    rows : sequence
-        ``history_rows``' arrays per lambda piece.
-    ip : ndarray of int
-        Each line's lambda piece, sorted (the lines are distinct sorted lambdas), so each
-        piece's lines are one slice: one stacked matrix product per piece present.
-    tl : ndarray
-        T_k(x_lambda) per line, [line, degree] (at least as many degrees as any piece needs).
-    deg, n_sub : int
-        The time piece's degree and sub-piece count.
-
-    Returns
-    -------
-    ndarray of complex128
-    """
-    out = np.zeros((deg, len(ip), 2 * n_sub))
-    for p in np.unique(ip):
-        c = rows[int(p)]
-        if c is None:
-            continue
-        a, b = np.searchsorted(ip, p), np.searchsorted(ip, p, side="right")
-        # one small matrix product per time degree (a stack of them), written straight into
-        # the [degree, line, ...] layout
-        np.matmul(tl[a:b, : c.shape[1]], c, out=out[:, a:b])
-    return out.reshape(deg, -1).view(np.complex128)
-
-
-def range_mask(table: Callable[[], SummaryTable], module: str, what: str,
-               hi: Callable[[], float] | None = None
-               ) -> Callable[[RealArrayLike], npt.NDArray[np.bool_]]:
-    """A table module's ``in_range(lam)``: the mask of lambda inside ``table()``'s range (up to
-    ``hi()`` when given), named and documented as a function of ``module``.
-
-    Parameters
-    ----------
-    table : callable
-        Returns the module's (lazily loaded) :class:`SummaryTable`.
-    module : str
-        The module the function belongs to (its ``__module__``).
-    what : str
-        The range in words, for the docstring.
-    hi : callable, optional
-        Returns another upper end (the history's).
-
-    Returns
-    -------
-    callable
-        ``in_range(lam) -> ndarray of bool``.
-    """
-    def in_range(lam: RealArrayLike) -> npt.NDArray[np.bool_]:
-        return table().in_range(lam, None if hi is None else hi())
-
-    in_range.__module__ = module
-    in_range.__doc__ = (f"Boolean mask: lambda inside {what}.\n\n    Parameters\n    ----------\n"
-                        "    lam : array_like\n        lambda (Eq. 11).\n\n    Returns\n"
-                        "    -------\n    ndarray of bool\n        lam's shape.\n    ")
-    return in_range
-
-
-def log_quantity_function(table: Callable[[], SummaryTable], module: str,
-                          logs: Mapping[str, str],
-                          products: Mapping[str, tuple[str, Callable[[FloatArray, FloatArray],
-                                                                     FloatArray]]]
-                          ) -> Callable[[RealArrayLike, str], tuple[FloatArray, FloatArray]]:
-    """A table module's ``log_quantity(lam, quantity)``: (ln q, d ln q / d lambda) from the one
-    series q needs (:meth:`SummaryTable.one`: that series and its derivative, not every field),
-    for the inverses (``exact.inverse``).
-
-    Parameters
-    ----------
-    table, module
-        As for :func:`range_mask`.
-    logs : mapping
-        quantity -> the series that stores ln q.
-    products : mapping
-        quantity -> (series s, ln q from lambda and s): q = c lambda s(lambda), so that
-        d ln q / d lambda = 1 / lambda + s' / s (each table keeps the form of ln q its numbers
-        were made with).
-
-    Returns
-    -------
-    callable
-        ``log_quantity(lam, quantity) -> (ln q, d ln q / d lambda)``, 1-D (lam flattened).
-    """
-    allowed = ", ".join([*logs, *products])
-
-    def log_quantity(lam: RealArrayLike, quantity: str) -> tuple[FloatArray, FloatArray]:
-        lam1 = np.asarray(lam, dtype=float).reshape(-1)
-        if quantity in logs:
-            return table().one(lam1, logs[quantity])
-        if quantity not in products:
-            raise ValueError(f"unknown quantity {quantity!r}; allowed: {allowed}")
-        series, ln_q = products[quantity]
-        s, ds = table().one(lam1, series)
-        return ln_q(lam1, s), 1.0 / lam1 + ds / s
-
-    log_quantity.__module__ = module
-    stored = "; ".join([f"{q} from the stored {k}" for q, k in logs.items()]
-                       + [f"{q} from lambda {k}" for q, (k, _) in products.items()])
-    log_quantity.__doc__ = (
-        "(ln q, d ln q / d lambda) from the one series q needs, for "
-        f":mod:`zener_sym.exact.inverse` ({stored}).\n\n    Parameters\n    ----------\n"
-        "    lam : array_like\n        lambda (Eq. 11) in the table's range (> 0 for a "
-        "product); flattened.\n    quantity : str\n"
-        f"        One of {allowed}.\n\n    Returns\n    -------\n    tuple of ndarray\n"
-        "        ln q and d ln q / d lambda, 1-D.\n\n    Raises\n    ------\n    ValueError\n"
-        "        For an unknown quantity or lambda outside the table's range.\n    ")
-    return log_quantity
 
 
 def derivative_input(lam: RealArrayLike, field: object,

@@ -24,7 +24,8 @@ from typing import Any, TypedDict
 import numpy as np
 
 from ..typing import FloatArray
-from .cheb_table import Pieces, TableSpec, parse_array, spec_assignments, spec_of
+from .cheb_table import Pieces, TableSpec, spec_assignments, spec_of
+from .cheb_table_history import history_assignments, parse_array
 from .chebyshev import cheb_coefficients, cheb_nodes, coefficient_difference, trim_trailing
 
 __all__ = ["NodeData", "Tables", "TableFile", "HistorySettings", "TableBuilder", "piece_nodes",
@@ -164,9 +165,7 @@ def history_coefficients(data: Sequence[NodeData], key: tuple[str, str], trim: f
 
 
 def build_tables(spec: TableSpec, sample: SampleFunction,
-                 history_keys: Sequence[tuple[str, str]] = (), history_trim: float = 0.0,
-                 weight: Callable[[Sequence[NodeData], tuple[str, str]], FloatArray] | None = None,
-                 ) -> Tables:
+                 history: "HistorySettings | None" = None) -> Tables:
     """Sample at the Chebyshev points of every piece of ``spec`` and fit the series.
 
     Parameters
@@ -175,13 +174,9 @@ def build_tables(spec: TableSpec, sample: SampleFunction,
         The description.
     sample : callable(piece index, lambdas) -> sequence of dict
         Each node's data (``NodeData``), in the order of the lambdas.
-    history_keys : sequence of (str, str)
-        The (time piece, field) series of the history (none: a summary-only table). A piece
+    history : HistorySettings, optional
+        The history's series, trimming and weights (none: a summary-only table). A piece
         whose nodes give no such key gets an empty entry.
-    history_trim : float
-        ``history_coefficients``' trimming level.
-    weight : callable, optional
-        ``history_coefficients``' weights (needed with ``history_keys``).
 
     Returns
     -------
@@ -193,9 +188,10 @@ def build_tables(spec: TableSpec, sample: SampleFunction,
     RuntimeError
         A node gave a non-finite summary value.
     """
+    keys = history.keys if history is not None else ()
     summary: dict[str, list[FloatArray]] = {k: [] for k in spec.fields}
-    history: dict[tuple[str, str], list[tuple[Any, ...]]] = {k: [] for k in history_keys}
-    weights: dict[tuple[str, str], list[tuple[float, ...]]] = {k: [] for k in history_keys}
+    mats: dict[tuple[str, str], list[tuple[Any, ...]]] = {k: [] for k in keys}
+    weights: dict[tuple[str, str], list[tuple[float, ...]]] = {k: [] for k in keys}
     for p, ((kind, a, b), n) in enumerate(zip(spec.pieces, spec.nodes)):
         data = list(sample(p, piece_nodes(kind, a, b, n)))
         for k in spec.fields:
@@ -203,18 +199,18 @@ def build_tables(spec: TableSpec, sample: SampleFunction,
             if not np.all(np.isfinite(v)):
                 raise RuntimeError(f"table build: a non-finite {k} on the piece [{a}, {b}]")
             summary[k].append(fit(v, spec.trim))
-        for key in history_keys:
+        for key in keys:
             if key not in data[0]:
-                history[key].append(())
+                mats[key].append(())
                 weights[key].append(())
                 continue
-            assert weight is not None, "a history needs its weights"
-            mats, wts = history_coefficients(data, key, history_trim, weight)
-            history[key].append(mats)
+            assert history is not None
+            m, wts = history_coefficients(data, key, history.trim, history.weight)
+            mats[key].append(m)
             weights[key].append(wts)
     out: Tables = {"summary": summary, "spec": spec}
-    if history_keys:
-        out["history"], out["weights"] = history, weights
+    if history is not None:
+        out["history"], out["weights"] = mats, weights
     return out
 
 
@@ -256,7 +252,7 @@ def render_summary(name: str, summary: Mapping[str, Sequence[Any]], fields: Sequ
     Parameters
     ----------
     name : str
-        The assigned name (SUMMARY, COEF).
+        The assigned name (``SUMMARY`` in every generated table).
     summary : mapping
         field -> per piece a 1-D series.
     fields : sequence of str
@@ -308,10 +304,10 @@ def render_history(history: Mapping[tuple[str, str], Sequence[Sequence[Any]]],
 
 
 def table_lines(t: Tables, spec: TableSpec, head: Sequence[str], summary_note: str,
-                history_note: Sequence[str] = (), quantum: float = 0.0,
-                summary_name: str = "SUMMARY") -> list[str]:
+                history: "HistorySettings | None" = None) -> list[str]:
     """The body of a generated table module: ``head`` (a layout of its own), the description
-    (``TABLE_*``), the summary series and, for a table with a history, the history.
+    (``TABLE_*``), for a table with a history its description (``history_assignments``), the
+    summary series (``SUMMARY``) and the history (``HISTORY``).
 
     Parameters
     ----------
@@ -323,22 +319,22 @@ def table_lines(t: Tables, spec: TableSpec, head: Sequence[str], summary_note: s
         Lines written first.
     summary_note : str
         The comment above the summary.
-    history_note : sequence of str
-        The comment lines above the history.
-    quantum : float
-        The history's rounding level (``render_history``).
-    summary_name : str
-        The name the summary is assigned to.
+    history : HistorySettings, optional
+        The history's description, rounding and comment.
 
     Returns
     -------
     list of str
     """
-    lines = [*head, *spec_assignments(spec), "", f"#: {summary_note}",
-             *render_summary(summary_name, t["summary"], spec.fields, spec.digits)]
-    if "history" in t:
-        lines += ["", *history_note,
-                  *render_history(t["history"], t.get("weights", {}), quantum)]
+    lines = [*head, *spec_assignments(spec)]
+    if history is not None:
+        lines += [*history_assignments(history.time_pieces, history.fields, history.n_sub,
+                                       history.hi)]
+    lines += ["", f"#: {summary_note}",
+              *render_summary("SUMMARY", t["summary"], spec.fields, spec.digits)]
+    if "history" in t and history is not None:
+        lines += ["", *history.note,
+                  *render_history(t["history"], t.get("weights", {}), history.quantum)]
     return lines
 
 
@@ -357,8 +353,8 @@ class TableFile:
         The first line of its docstring.
     provenance : str
         How its numbers were obtained; ``{scipy}`` stands for scipy's version.
-    summary_note, summary_name
-        As for :func:`table_lines`.
+    summary_note : str
+        The comment above the summary (:func:`table_lines`).
     """
 
     filename: str
@@ -366,7 +362,6 @@ class TableFile:
     title: str
     provenance: str
     summary_note: str = "field -> one tuple of Chebyshev coefficients per lambda piece"
-    summary_name: str = "SUMMARY"
 
     @property
     def command(self) -> str:
@@ -385,13 +380,20 @@ WeightFunction = Callable[[Sequence[NodeData], tuple[str, str]], FloatArray]
 
 @dataclasses.dataclass(frozen=True)
 class HistorySettings:
-    """A table's history in one place: its series, how they are trimmed, weighed, rounded and
-    compared, and the comment above them in the file.
+    """A table's history in one place: its description (written into the file and read back
+    by the runtime's :class:`~.cheb_table_history.History`), how its series are trimmed,
+    weighed, rounded and compared, and the comment above them in the file.
 
     Attributes
     ----------
-    keys : tuple of (str, str)
-        The (time piece, field) series, in the order they are built.
+    time_pieces : tuple of str
+        The time pieces, in the order of time.
+    fields : tuple of str
+        The two stored fields of every time piece (the pair the runtime evaluates together).
+    n_sub : dict
+        Sub-pieces (equal parts of the reduced time) per time piece.
+    hi : float
+        The history covers the lambda pieces that end by this.
     trim : float
         ``history_coefficients``' trimming level; a rebuilt coefficient that moves its field by
         less than this also passes ``compare`` (its floor).
@@ -403,11 +405,19 @@ class HistorySettings:
         The comment lines above the history.
     """
 
-    keys: tuple[tuple[str, str], ...]
+    time_pieces: tuple[str, ...]
+    fields: tuple[str, str]
+    n_sub: dict[str, int]
+    hi: float
     trim: float
     quantum: float
     weight: WeightFunction
     note: tuple[str, ...] = ()
+
+    @property
+    def keys(self) -> tuple[tuple[str, str], ...]:
+        """The (time piece, field) series, in the order they are built."""
+        return tuple((p, k) for p in self.time_pieces for k in self.fields)
 
 
 def _no_lines(spec: TableSpec) -> list[str]:
@@ -439,8 +449,6 @@ class TableBuilder:
         Lines written before the description (a table's own layout).
     tail : tuple of str
         Lines written last.
-    skip : mapping, optional
-        ``compare``'s skip: field -> piece indices whose summary series are not compared.
     """
 
     spec: TableSpec | Callable[[], TableSpec]
@@ -450,7 +458,6 @@ class TableBuilder:
     history: HistorySettings | None = None
     head: Callable[[TableSpec], list[str]] = _no_lines
     tail: tuple[str, ...] = ()
-    skip: Mapping[str, Sequence[int]] | None = None
 
     def description(self) -> TableSpec:
         """The table's :class:`~.cheb_table.TableSpec` (found now when ``spec`` is a function)."""
@@ -464,10 +471,7 @@ class TableBuilder:
         Tables
             summary, spec and, with a history, history and weights.
         """
-        h = self.history
-        if h is None:
-            return build_tables(self.description(), self.sample)
-        return build_tables(self.description(), self.sample, h.keys, h.trim, h.weight)
+        return build_tables(self.description(), self.sample, self.history)
 
     def render(self, tables: Mapping[str, Any] | None = None) -> str:
         """The generated module's text.
@@ -485,10 +489,9 @@ class TableBuilder:
         import scipy
 
         t = self.build() if tables is None else self.as_tables(tables)
-        spec, h = t["spec"], self.history
-        body = [*table_lines(t, spec, self.head(spec), self.file.summary_note,
-                             h.note if h else (), h.quantum if h else 0.0,
-                             self.file.summary_name), *self.tail]
+        spec = t["spec"]
+        body = [*table_lines(t, spec, self.head(spec), self.file.summary_note, self.history),
+                *self.tail]
         return table_module(*self.file.words(scipy.__version__), self.digest(), body)
 
     def as_tables(self, t: Mapping[str, Any]) -> Tables:
@@ -509,7 +512,7 @@ class TableBuilder:
         if "spec" in t:
             return dict(t)  # type: ignore[return-value]
         if "TABLE_PIECES" in t:
-            return stored_tables(t, self.file.summary_name)
+            return stored_tables(t)
         out: Tables = {"spec": self.description(), "summary": dict(t["summary"])}
         for key in ("history", "weights"):
             if key in t:
@@ -518,15 +521,14 @@ class TableBuilder:
 
     def compare(self, stored: Mapping[str, Any], fresh: Mapping[str, Any]) -> list[str]:
         """Differences beyond the description's ``check_rtol`` between two tables (any form
-        ``as_tables`` reads): :func:`compare` with the history's floor and ``skip``.
+        ``as_tables`` reads): :func:`compare` with the history's settings.
 
         Returns
         -------
         list of str
             Readable lines, one per difference (empty: they agree).
         """
-        return compare(self.as_tables(stored), self.as_tables(fresh),
-                       self.history.trim if self.history else 0.0, self.skip)
+        return compare(self.as_tables(stored), self.as_tables(fresh), self.history)
 
 
 def table_module(title: str, command: str, provenance: str, digest: str,
@@ -559,7 +561,7 @@ def table_module(title: str, command: str, provenance: str, digest: str,
     return "\n".join(lines) + "\n"
 
 
-def stored_tables(ns: Mapping[str, Any], summary_name: str = "SUMMARY") -> Tables:
+def stored_tables(ns: Mapping[str, Any]) -> Tables:
     """A committed table module's numbers as ``Tables`` (history matrices as their strings), for
     :func:`compare` and for re-rendering with the committed numbers.
 
@@ -567,8 +569,6 @@ def stored_tables(ns: Mapping[str, Any], summary_name: str = "SUMMARY") -> Table
     ----------
     ns : mapping
         The module's globals.
-    summary_name : str
-        The name its summary series are assigned to.
 
     Returns
     -------
@@ -576,7 +576,7 @@ def stored_tables(ns: Mapping[str, Any], summary_name: str = "SUMMARY") -> Table
     """
     spec = spec_of(ns)
     out: Tables = {"spec": spec, "summary": {k: [np.asarray(c, dtype=float) for c in v]
-                                             for k, v in ns[summary_name].items()}}
+                                             for k, v in ns["SUMMARY"].items()}}
     if "HISTORY" in ns:
         out["history"] = {k: [tuple(subs) for subs in v] for k, v in ns["HISTORY"].items()}
     return out
@@ -591,20 +591,24 @@ def _matrices(entries: Sequence[Any]) -> list[FloatArray]:
     return out
 
 
-def compare(stored: Tables, fresh: Tables, history_floor: float = 0.0,
-            skip: Mapping[str, Sequence[int]] | None = None) -> list[str]:
+def compare(stored: Tables, fresh: Tables, history: "HistorySettings | None" = None) -> list[str]:
     """Differences beyond the fresh spec's ``check_rtol`` between a stored and a rebuilt table.
 
     Parameters
     ----------
     stored, fresh : Tables
         The committed table (``stored_tables``) and the rebuilt one (``build_tables``).
-    history_floor : float
-        A history coefficient change that moves its field by less than this (on the field's
-        scale: divided by the sub-piece's weight) passes too.
-    skip : mapping, optional
-        field -> piece indices whose summary series are not compared (a series stored as 0
-        where it is unused).
+    history : HistorySettings, optional
+        The history's settings: a history coefficient change that moves its field by less
+        than its ``trim`` (on the field's scale: divided by the sub-piece's weight) passes too.
+        Without them every change counts.
+
+    Notes
+    -----
+    A summary series that is identically zero in both tables agrees by rule: a relative
+    difference would be 0/0 there. Such a series is one a table stores as 0 where it does not
+    use it (the force-free end's ``log_tau_p`` on its ln-lambda pieces); a zero series against
+    a nonzero one is still a difference.
 
     Returns
     -------
@@ -623,9 +627,10 @@ def compare(stored: Tables, fresh: Tables, history_floor: float = 0.0,
             bad.append(f"summary {k}: missing from the stored table")
             continue
         for p, (c_new, c_old) in enumerate(zip(fresh["summary"][k], stored["summary"][k])):
-            if skip and p in skip.get(k, ()):
-                continue
-            err = coefficient_difference(c_new, c_old)
+            if not np.any(c_new) and not np.any(c_old):
+                continue  # both identically zero: no relative difference to take
+            with np.errstate(divide="ignore"):  # a zero series against a nonzero one: inf
+                err = coefficient_difference(c_new, c_old)
             if not err <= rtol:
                 bad.append(f"summary {k} lambda piece {p}: relative difference {err:.2e} > "
                            f"{rtol:g}")
@@ -636,7 +641,8 @@ def compare(stored: Tables, fresh: Tables, history_floor: float = 0.0,
             continue
         # without weights (a table given as bare arrays) every change counts
         wts = [w for subs in fresh.get("weights", {}).get(key, []) for w in subs]
-        floors = [history_floor / w / rtol for w in wts] or [0.0] * len(new)
+        floor = history.trim if history is not None else 0.0
+        floors = [floor / w / rtol for w in wts] or [0.0] * len(new)
         for i, (c_new, c_old, floor) in enumerate(zip(new, old, floors)):
             err = coefficient_difference(c_new, c_old, floor)
             if not err <= rtol:

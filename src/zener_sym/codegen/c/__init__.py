@@ -87,8 +87,8 @@ def build_header() -> str:
     gen = generated_dir()
     ns = _tables.load(gen / EXACT_TABLES[0][2])
     text = _rt.HEADER
-    for key, val in (("LAM_MIN", _tables.num(ns["LAM_PIECES"][0])),
-                     ("LAM_MAX", _tables.num(ns["LAM_PIECES"][-1])),
+    for key, val in (("LAM_MIN", _tables.num(ns["TABLE_PIECES"][0][1])),
+                     ("LAM_MAX", _tables.num(ns["TABLE_PIECES"][-1][2])),
                      ("LAM_CRIT", str(_ham.lam_crit())),
                      ("ENDS", ", ".join(m for _, m, _ in EXACT_TABLES + FORCE_TABLES)
                       + "; any other returns ZS_EDOM")):

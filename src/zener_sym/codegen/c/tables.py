@@ -7,8 +7,8 @@ with the digits the Python file holds (the history's strings verbatim, the summa
 ``repr``), so C and numpy evaluate the same numbers.
 
 ``exact_table_c(name, ns)`` is generic over a table module with the exact table's layout
-(``LAM_PIECES``, ``LOG_FROM``, ``HISTORY_TO``, ``C_STRETCH``, ``C_END``, ``S_ORBIT``,
-``S_TRANSIENT``, ``N_SUB``, ``SUMMARY``, ``HISTORY``): another end of contact with its own table
+(``TABLE_PIECES``, whose ln-lambda pieces start at LOG_FROM, ``HISTORY_TO``, ``C_STRETCH``,
+``C_END``, ``S_ORBIT``, ``S_TRANSIENT``, ``N_SUB``, ``SUMMARY``, ``HISTORY``): another end of contact with its own table
 is one more entry in ``zener_sym.codegen.c.EXACT_TABLES``.
 """
 from __future__ import annotations
@@ -95,6 +95,11 @@ def pieces_c(p: str, pieces: Sequence[Sequence[Any]]) -> tuple[str, list[float],
     return text, ga, gb
 
 
+def log_start(pieces: Sequence[Sequence[Any]]) -> float:
+    """Where a table's ln-lambda pieces start (its TABLE_PIECES; ``TableSpec.log_from``)."""
+    return min((float(a) for k, a, _ in pieces if k == "log"), default=math.inf)
+
+
 def _pieces_init(p: str, n: int) -> str:
     return f"{{{n}, {p}_edges, {p}_ga, {p}_gb, {p}_kind}}"
 
@@ -109,7 +114,7 @@ def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
     pieces = ns["TABLE_PIECES"]
     edges = [float(a) for _, a, _ in pieces] + [float(pieces[-1][2])]
     n_lam = len(pieces)
-    log_from = float(ns["LOG_FROM"])
+    log_from = log_start(ns["TABLE_PIECES"])
     hist_to = float(ns["HISTORY_TO"])
     p = f"zs__{name}"
     out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n"]
@@ -291,7 +296,7 @@ def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], key
 def ham1_table_c(ns: dict[str, Any]) -> tuple[str, int]:
     """C text of the ham1 summary table (``static const zs__sumtab zs__h1``), and its largest
     degree."""
-    text, init, deg = summary_c("zs__h1", ns, HAM1_KEYS, summary_name="COEF")
+    text, init, deg = summary_c("zs__h1", ns, HAM1_KEYS)
     return ("/* ---- ham1 summary table ---- */\n" + text
             + f"static const zs__sumtab zs__h1 = {init};\n\n"), deg
 
@@ -313,7 +318,7 @@ def force_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
         raise ValueError(f"force table {name}: time pieces {ns.get('TIME_PIECES')}, fields "
                          f"{ns.get('HISTORY_KEYS')}; the C runtime evaluates "
                          f"{FORCE_TIME_PIECES} with {FORCE_HISTORY_KEYS}")
-    keys = tuple(ns.get("SUMMARY_KEYS", ()))
+    keys = tuple(ns.get("TABLE_FIELDS", ()))
     missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
     if missing:
         raise ValueError(f"force table {name}: summary keys {missing} missing")

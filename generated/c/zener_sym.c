@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 7125f5cdf7dee8c2
+ * Inputs hash: 151d4b7ba83e427f
  * SymPy version: 1.14.0
  */
 #include <float.h>
@@ -27083,12 +27083,12 @@ typedef struct {
 } zs__hist_t;
 
 /* one block of points between the passes: time piece (n_tp: past the history's end), reduced
-   time z, sub-piece and local x of each point, the two fields f and g (Horner), and two
-   numbers of the kind's own (a0, a1: say the factors of its back-transform) */
+   time z, sub-piece and local x of each point, the history's two fields h (Horner; by the
+   table's generated names, h[ZS__<tag>H_<FIELD>]), and two numbers of the kind's own (a0, a1:
+   say the factors of its back-transform) */
 typedef struct {
     int pc[ZS__BLOCK], sb[ZS__BLOCK];
-    double z[ZS__BLOCK], xs[ZS__BLOCK], f[ZS__BLOCK], g[ZS__BLOCK], a0[ZS__BLOCK],
-        a1[ZS__BLOCK];
+    double z[ZS__BLOCK], xs[ZS__BLOCK], h[2][ZS__BLOCK], a0[ZS__BLOCK], a1[ZS__BLOCK];
 } zs__blk_t;
 
 /* a table's own code: at an end of contact its summary (lambda in range) and the inverse's
@@ -27239,20 +27239,20 @@ static void zs__horner_block(zs__hist_t *H, size_t nb, zs__blk_t *ZS__RESTRICT B
         int p = B->pc[b], sub = B->sb[b], j;
         double (*m)[2];
         if (p >= n_tp) {
-            B->f[b] = B->g[b] = 0.0;
+            B->h[0][b] = B->h[1][b] = 0.0;
             continue;
         }
         m = H->P[p].m[sub];
         j = H->P[p].deg[sub] - 1;
         if (b + 3 < nb && B->pc[b + 3] == p && B->sb[b + 3] == sub && B->pc[b + 1] == p
             && B->sb[b + 1] == sub && B->pc[b + 2] == p && B->sb[b + 2] == sub) {
-            zs__horner4(m, j, B->xs + b, B->f + b, B->g + b);
+            zs__horner4(m, j, B->xs + b, B->h[0] + b, B->h[1] + b);
             b += 3;
         } else if (b + 1 < nb && B->pc[b + 1] == p && B->sb[b + 1] == sub) {
-            zs__horner2(m, j, B->xs + b, B->f + b, B->g + b);
+            zs__horner2(m, j, B->xs + b, B->h[0] + b, B->h[1] + b);
             b++;
         } else
-            zs__horner1(m, j, B->xs + b, B->f + b, B->g + b);
+            zs__horner1(m, j, B->xs + b, B->h[0] + b, B->h[1] + b);
     }
 }
 
@@ -27436,7 +27436,7 @@ static void zs__plate_reduce(const zs__hist_t *H, const double *tau, size_t nb,
 
 /* h = exp(f / 2) (zs__exp_pass: the points in pairs; no branches, so the compiler pairs the
    points); delta = h^2 a0 and sqrt(delta) = h a1 for the force delta^{3/2} without a square
-   root; the impulse g (1 + e past the end of contact), the velocity 1 - g */
+   root; the impulse I (1 + e past the end of contact), the velocity 1 - I */
 static void zs__plate_back(const zs__hist_t *H, size_t nb, zs__blk_t *ZS__RESTRICT B,
                            double *const *o)
 {
@@ -27444,9 +27444,9 @@ static void zs__plate_back(const zs__hist_t *H, size_t nb, zs__blk_t *ZS__RESTRI
     double hv[ZS__BLOCK], fv[ZS__BLOCK];
     size_t b, h2 = (nb + 1) / 2;
     for (b = 0; b < nb; b++) {
-        hv[b] = 0.5 * B->f[b];
+        hv[b] = 0.5 * B->h[ZS__XH_F][b];
         if (B->pc[b] >= H->t->n_tp)
-            B->g[b] = imp_end;
+            B->h[ZS__XH_I][b] = imp_end;
     }
     if (nb % 2) { /* an even count for the paired loops below */
         hv[nb] = 0.0;
@@ -27462,11 +27462,11 @@ static void zs__plate_back(const zs__hist_t *H, size_t nb, zs__blk_t *ZS__RESTRI
         memcpy(o[0], fv, nb * sizeof fv[0]);
     if (o[1] != NULL)
         for (b = 0; b < nb; b++)
-            o[1][b] = 1.0 - B->g[b];
+            o[1][b] = 1.0 - B->h[ZS__XH_I][b];
     if (o[2] != NULL)
         memcpy(o[2], hv, nb * sizeof hv[0]);
     if (o[3] != NULL)
-        memcpy(o[3], B->g, nb * sizeof B->g[0]);
+        memcpy(o[3], B->h[ZS__XH_I], nb * sizeof hv[0]);
 }
 
 static const zs__kind zs__kind_plate = {zs__plate_summary, zs__plate_q, zs__plate_setup,
@@ -27558,7 +27558,7 @@ static void zs__force_reduce(const zs__hist_t *H, const double *tau, size_t nb,
     }
 }
 
-/* delta = exp(f) a0 (libm's exp), the velocity v = g, the grains' force sqrt(delta) (delta +
+/* delta = exp(f) a0 (libm's exp), the velocity v, the grains' force sqrt(delta) (delta +
    (3/2) lambda v) and the impulse 1 - v; past the end of contact delta = 0, v = -e */
 static void zs__force_back(const zs__hist_t *H, size_t nb, zs__blk_t *ZS__RESTRICT B,
                            double *const *o)
@@ -27568,8 +27568,8 @@ static void zs__force_back(const zs__hist_t *H, size_t nb, zs__blk_t *ZS__RESTRI
     for (b = 0; b < nb; b++) {
         double d = 0.0, vel = -e;
         if (B->pc[b] < H->t->n_tp) {
-            d = exp(B->f[b]) * B->a0[b];
-            vel = B->g[b];
+            d = exp(B->h[ZS__FH_F][b]) * B->a0[b];
+            vel = B->h[ZS__FH_V][b];
         }
         if (o[0] != NULL)
             o[0][b] = d;

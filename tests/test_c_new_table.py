@@ -182,3 +182,90 @@ def test_a_new_table_with_a_history_in_c(tmp_path, toy):
         np.testing.assert_allclose(s_order[1], toy_table.g(lam), rtol=0, atol=1e-12)
         np.testing.assert_allclose(hist[:, 0], np.exp(-lam * y), rtol=0, atol=1e-12)
         np.testing.assert_allclose(hist[:, 1], np.sin(lam * y), rtol=0, atol=1e-12)
+
+
+#: Names of the shipped table modules that repeat their description (``TABLE_*``) or only order
+#: and check what HISTORY holds; the Python engine may drop them (issue 36: "each generated file
+#: is described twice"), and ham1's summary may be renamed from COEF to SUMMARY.
+LAYOUT_ONLY = ("LAM_PIECES", "LOG_FROM", "SUMMARY_KEYS", "TIME_PIECES", "HISTORY_KEYS", "N_SUB",
+               "HISTORY_TO")
+
+
+def _stripped(ns):
+    out = {k: v for k, v in ns.items() if k not in LAYOUT_ONLY}
+    if "COEF" in out:
+        out["SUMMARY"] = out.pop("COEF")
+    return out
+
+
+def _outputs(exe, lams, tau):
+    stdin = " ".join(map(repr, [*lams.tolist(), *tau.tolist()]))
+    r = subprocess.run([str(exe), str(lams.size), str(tau.size)], input=stdin,
+                       capture_output=True, text=True, check=True)
+    return r.stdout
+
+
+SHIPPED_DRIVER = r"""
+#include <stdio.h>
+#include <stdlib.h>
+#include "zener_sym.h"
+/* argv: lambdas, times; stdin: their values; stdout: every output of both ends and ham1 */
+int main(int argc, char **argv)
+{
+    size_t m = (size_t)atol(argv[1]), n = (size_t)atol(argv[2]), i, j;
+    double *lam = malloc(m * sizeof *lam), *tau = malloc(n * sizeof *tau), *o[4];
+    zs_summary_t s;
+    int end, k;
+    (void)argc;
+    for (i = 0; i < m; i++)
+        if (scanf("%lf", &lam[i]) != 1)
+            return 2;
+    for (i = 0; i < n; i++)
+        if (scanf("%lf", &tau[i]) != 1)
+            return 2;
+    for (k = 0; k < 4; k++)
+        o[k] = malloc(n * sizeof *o[k]);
+    for (i = 0; i < m; i++) {
+        for (end = ZS_DELTA; end <= ZS_FORCE; end++) {
+            int rc = zs_summary(lam[i], end, &s);
+            printf("%d %a %a %a %a %a %a\n", rc, s.delta_m, s.tau_d, s.e, s.F_m, s.int_F2, s.xi);
+            printf("%a\n", zs_lam_for_e(s.e, end));
+            rc = zs_history(lam[i], end, n, tau, o[0], o[1], o[2], o[3]);
+            for (j = 0; j < n; j++)
+                printf("%d %a %a %a %a\n", rc, o[0][j], o[1][j], o[2][j], o[3][j]);
+        }
+        k = zs_ham1_summary(lam[i] / 500.0, &s);
+        printf("%d %a %a\n", k, s.delta_m, s.e);
+    }
+    return 0;
+}
+"""
+
+
+def test_the_emitter_reads_the_description_not_the_layout_names(tmp_path):
+    """The shipped tables' modules without the names that repeat their description (Layout's
+    LAM_PIECES, LOG_FROM, SUMMARY_KEYS; TIME_PIECES, HISTORY_KEYS, N_SUB, HISTORY_TO) and with
+    ham1's series under SUMMARY: the emitted library gives every output of the shipped one, bit
+    for bit (the time pieces and fields then come in HISTORY's order, read by their generated
+    names)."""
+    from zener_sym.codegen.c import TABLES, CTable, build_source
+
+    stripped = [CTable(t.name, t.tag, kind=t.kind, contact_end=t.contact_end, fold_x=t.fold_x,
+                       ns=_stripped(t.module())) for t in TABLES]
+    assert [k for t in stripped for k in LAYOUT_ONLY + ("COEF",) if k in t.module()] == []
+    exes = {}
+    for name, text in (("shipped", (C_DIR / "zener_sym.c").read_text(encoding="utf-8")),
+                       ("stripped", build_source(tables=stripped))):
+        (tmp_path / f"{name}.c").write_text(text, encoding="utf-8")
+        (tmp_path / f"main_{name}.c").write_text(SHIPPED_DRIVER, encoding="utf-8")
+        exes[name] = tmp_path / name
+        r = subprocess.run([CC, "-O2", f"-I{C_DIR}", str(tmp_path / f"{name}.c"),
+                            str(tmp_path / f"main_{name}.c"), "-o", str(exes[name]), "-lm"],
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+    lams = np.concatenate([[0.0, 1e-9, 0.25, 1.0, 4.999, 5.0, 7.5, 999.0, 1000.0, 1001.0],
+                           np.random.default_rng(3).uniform(0.0, 1000.0, 8)])
+    tau = np.linspace(0.0, 4.0, 700)
+    shipped, again = (_outputs(exes[k], lams, tau) for k in ("shipped", "stripped"))
+    assert shipped.count("\n") == lams.size * (2 * (2 + tau.size) + 1)
+    assert again == shipped

@@ -169,19 +169,21 @@ def tables_c(tables: Sequence[CTable]) -> tuple[str, str, str, dict[str, int]]:
     return "".join(data), "".join(enums.values()), ends, sizes
 
 
-def build_source(extra: Sequence[CTable] = ()) -> str:
+def build_source(extra: Sequence[CTable] = (), tables: Sequence[CTable] | None = None) -> str:
     """generated/c/zener_sym.c: table data, printed HAM formulas and the runtime.
 
     Parameters
     ----------
     extra : sequence of CTable
-        Tables emitted besides ``TABLES`` (a test's), the runtime's buffers sized for them too.
+        Tables emitted besides ``tables`` (a test's), the runtime's buffers sized for them too.
+    tables : sequence of CTable, optional
+        The tables the runtime serves, default ``TABLES`` (a test gives them other modules).
 
     Returns
     -------
     str
     """
-    data, enums, ends, sizes = tables_c([*TABLES, *extra])
+    data, enums, ends, sizes = tables_c([*(TABLES if tables is None else tables), *extra])
     types = _rt.TYPES
     for key, val in (("MAX_SUB", sizes["max_sub"]), ("MAX_ROWS", sizes["max_rows"]),
                      ("MAX_LAMDEG", sizes["max_lamdeg"]), ("MAX_SUM", sizes["max_sum"]),

@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 889deaf57632f81d
+ * Inputs hash: 842d60a3b308fd38
  * SymPy version: 1.14.0
  */
 #include <float.h>

@@ -221,7 +221,7 @@ def _in_order(found: Sequence[str], written: Any, what: str) -> tuple[str, ...]:
     if written is None:
         return tuple(found)
     if sorted(written) != sorted(found):
-        raise ValueError(f"table: {what} {tuple(written)} written, the history has "
+        raise ValueError(f"table module: {what} {tuple(written)} written, the history has "
                          f"{tuple(found)}")
     return tuple(written)
 
@@ -234,23 +234,23 @@ def _history_of(ns: Mapping[str, Any], n_lam: int) -> dict[str, Any]:
     flds = _in_order(list(dict.fromkeys(f for _, f in hist)), ns.get("HISTORY_KEYS"),
                      "history fields")
     if len(flds) != HISTORY_FIELDS or any((tp, f) not in hist for tp in tps for f in flds):
-        raise ValueError(f"table: history fields {flds} over time pieces {tps}; the C runtime "
-                         f"evaluates {HISTORY_FIELDS} fields in every time piece")
+        raise ValueError(f"table module: history fields {flds} over time pieces {tps}; the C "
+                         f"runtime evaluates {HISTORY_FIELDS} fields in every time piece")
     n_sub, n_hist = [], 0
     for tp in tps:
         counts = {len(subs) for f in flds for subs in hist[(tp, f)] if len(subs)}
         if len(counts) != 1:
-            raise ValueError(f"table: time piece {tp} has {sorted(counts)} sub-pieces; one "
+            raise ValueError(f"table module: time piece {tp} has {sorted(counts)} sub-pieces; one "
                              "count per time piece")
         n_sub.append(counts.pop())
         written = ns.get("N_SUB", {}).get(tp, n_sub[-1])
         if written != n_sub[-1]:
-            raise ValueError(f"table: time piece {tp} has {n_sub[-1]} sub-pieces, N_SUB says "
-                             f"{written}")
+            raise ValueError(f"table module: time piece {tp} has {n_sub[-1]} sub-pieces, N_SUB "
+                             f"says {written}")
         n_hist = max([n_hist] + [ip + 1 for f in flds
                                  for ip, subs in enumerate(hist[(tp, f)]) if len(subs)])
     if n_hist > n_lam:
-        raise ValueError(f"table: a history on {n_hist} lambda pieces of {n_lam}")
+        raise ValueError(f"table module: a history on {n_hist} lambda pieces of {n_lam}")
     return {"time_pieces": tps, "history_fields": flds, "n_sub": tuple(n_sub),
             "n_hist": n_hist, "history": hist}
 
@@ -284,9 +284,9 @@ def describe(ns: Mapping[str, Any]) -> Description:
                     constants=consts, **hist)
     for name in (*d.fields, *d.time_pieces, *d.history_fields, *(k for k, _ in consts)):
         if not _C_NAME.match(name):
-            raise ValueError(f"table: the name {name!r} is no C identifier")
+            raise ValueError(f"table module: the name {name!r} is no C identifier")
     if "HISTORY_TO" in ns and d.n_hist and d.edges[d.n_hist] != float(ns["HISTORY_TO"]):
-        raise ValueError(f"table: HISTORY_TO = {ns['HISTORY_TO']!r}, the history ends at "
+        raise ValueError(f"table module: HISTORY_TO = {ns['HISTORY_TO']!r}, the history ends at "
                          f"{d.edges[d.n_hist]!r}")
     return d
 

@@ -611,3 +611,51 @@ def test_the_engine_checks_can_fail():
     assert assigned_names(text) & RETIRED_TABLE_NAMES == {"COEF", "PIECES"}
     assert class_fields(text) == {"LOG_FROM", "N_SUB"}
     assert re.search(r"\.__(module|doc)__ = ", text)
+# --- one table engine in C: one struct, one emitter, generated names, one history engine ----
+#: The C emitter's modules (codegen/c).
+C_EMITTER = ("zener_sym.codegen.c", "zener_sym.codegen.c.tables")
+
+
+def hand_written_table_enums(text: str) -> list[str]:
+    """Enumerators of a C text named as the emitter's generated table names (``ZS__<tag>_*``,
+    ``ZS__<tag>P_*``, ``ZS__<tag>H_*``, ``ZS__<tag>K_*`` for the shipped tags)."""
+    found = []
+    for body in re.findall(r"enum\s*\{([^}]*)\}", text):
+        found += [n for n in re.findall(r"\b(ZS__\w+)", body)
+                  if re.match(r"ZS__N?[XFH][PHK]?(_[A-Z0-9_]+)?$", n)
+                  and not n.startswith(("ZS__LAM", "ZS__LOG", "ZS__SQRT"))]
+    return found
+
+
+def test_c_tables_are_one_struct_with_generated_names():
+    """Issue 36, section 2, in C: one table struct (``zs__table``) and no other that holds a
+    summary; no table's field, time piece or constant enumerated by hand in the templates (the
+    emitter generates them from each module); no field name of a shipped table written in the
+    emitter (it reads them from the module); one generated array of the ends of contact, not a
+    switch per kind; one history engine (the only caller of the contraction and of Horner)."""
+    import runpy
+
+    text = "\n".join((C_DIR / n).read_text(encoding="utf-8") for n in ("types.c.in",
+                                                                        "runtime.c.in"))
+    holders = re.findall(r"typedef struct \{[^}]*\bzs__sumtab s;[^}]*\}\s*(\w+);", text)
+    assert holders == ["zs__table"], holders
+    assert hand_written_table_enums(text) == []
+    assert not re.search(r"@\w*SWITCH@|switch \(contact_end\)", text) and "@ENDS@" in text
+    funcs = c_functions(text)
+    assert sorted(f for f, b in funcs.items() if "zs__contract(" in b
+                  and f != "zs__contract") == ["zs__place_block"]
+    assert sorted(f for f, b in funcs.items() if re.search(r"zs__horner[124]\(", b)) == [
+        "zs__horner_block"]
+    fields = set()
+    for name in ("exact_table.py", "exact_force_table.py", "ham1_table.py"):
+        ns = runpy.run_path(str(ROOT / "generated" / name))
+        fields |= set(ns["TABLE_FIELDS"]) | {f for _, f in ns.get("HISTORY", {})}
+    for m in C_EMITTER:
+        strings = {n.value for n in ast.walk(ast.parse(SOURCES[m]))
+                   if isinstance(n, ast.Constant) and isinstance(n.value, str)}
+        assert not strings & fields, f"{m} writes the field names {sorted(strings & fields)}"
+
+
+def test_the_c_table_checks_can_fail():
+    c = "enum {\n    ZS__X_DELTA_M,\n    ZS__NX\n};\nenum { ZS__LAM = 0, ZS__PW_TAU_S };\n"
+    assert hand_written_table_enums(c) == ["ZS__X_DELTA_M", "ZS__NX"]

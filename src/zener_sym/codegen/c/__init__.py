@@ -2,24 +2,28 @@
 
 One source feeds every language: the HAM formulas come from ``codegen.ham_exprs`` (the same
 expressions the numpy and mpmath kernels print), printed by SymPy's C99 printer
-(``codegen.c.ham``); the exact model's and the ham1 summary's Chebyshev tables are read from
-``generated/exact_table.py`` and ``generated/ham1_table.py`` and written as static const data
-(``codegen.c.tables``); the hand-written runtime that evaluates them mirrors
-``zener_sym.exact.table`` and ``zener_sym.ham.table`` (``codegen.c.runtime``).
+(``codegen.c.ham``); the Chebyshev tables (``TABLES``: the exact model's two ends of contact and
+the ham1 summary) are read from their generated modules and written as static const data by one
+emitter (``codegen.c.tables.table_c``: one ``zs__table`` each, with enums generated from each
+module's own description); the hand-written runtime evaluates every table's summary with one
+function and every history with one engine, each end of contact supplying only what is its own
+(``codegen.c.runtime``).
 
-An exact table for another end of contact is one more entry of ``EXACT_TABLES`` (a table module
-with the exact table's layout); a contact end without a table returns ZS_EDOM.
+A table is one entry of ``TABLES``; a table served at an end of contact names its runtime code
+(``kind``: the ``zs__kind`` that supplies its derived fields, reduced time and back-transform)
+and its ``contact_end`` macro; a contact end without a table returns ZS_EDOM.
 
 Deterministic: no floating-point work whose result depends on the machine (logs of the lambda
 edges and the Gauss-Jacobi nodes are computed with mpmath), nothing printed from an unordered
 container. The header of both files carries the inputs hash of the derivation, the codegen
-sources (this package included) and the two table files.
+sources (this package included) and the table files.
 """
 from __future__ import annotations
 
+import dataclasses
 import pathlib
 import re
-from collections.abc import Callable
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import sympy
@@ -31,19 +35,53 @@ from . import ham as _ham
 from . import runtime as _rt
 from . import tables as _tables
 
-__all__ = ["build_header", "build_source", "EXACT_TABLES", "C_FILES"]
+__all__ = ["build_header", "build_source", "CTable", "TABLES", "C_FILES"]
 
-#: (C name, contact_end macro, table file in generated/): the exact tables the C code serves.
-EXACT_TABLES: list[tuple[str, str, str]] = [
-    ("delta", "ZS_DELTA", "exact_table.py"),
-]
-#: (C name, contact_end macro, table file): force-free-end tables (the layout of
-#: generated/exact_force_table.py: time pieces C and R, fields f and v) the C code serves.
-FORCE_TABLES: list[tuple[str, str, str]] = [
-    ("force", "ZS_FORCE", "exact_force_table.py"),
-]
-#: The ham1 summary table.
-HAM1_TABLE = "ham1_table.py"
+
+@dataclasses.dataclass(frozen=True)
+class CTable:
+    """One table of the C code.
+
+    Attributes
+    ----------
+    name : str
+        Its C name (``zs__tab_<name>``).
+    tag : str
+        The tag of its generated enums (``ZS__<tag>_<FIELD>``, ``tables.enums_c``); tables that
+        share runtime code share a tag and must have the same names.
+    file : str
+        Its module under generated/ (ignored when ``ns`` is given).
+    kind : str, optional
+        The runtime code that serves it at an end of contact (``zs__kind_<kind>``).
+    contact_end : str, optional
+        That end's macro in zener_sym.h.
+    fold_x : bool
+        Its summary alone with the variable's division folded into two constants
+        (``tables.summary_c``).
+    ns : mapping, optional
+        The module's names, for a table that is no file of generated/ (a test's).
+    """
+
+    name: str
+    tag: str
+    file: str = ""
+    kind: str | None = None
+    contact_end: str | None = None
+    fold_x: bool = False
+    ns: Mapping[str, Any] | None = None
+
+    def module(self) -> Mapping[str, Any]:
+        """The table module's names."""
+        return self.ns if self.ns is not None else _tables.load(generated_dir() / self.file)
+
+
+#: The tables the C code serves: the plate's end of contact, the force-free end and the ham1
+#: summary.
+TABLES: tuple[CTable, ...] = (
+    CTable("delta", "X", "exact_table.py", kind="plate", contact_end="ZS_DELTA", fold_x=True),
+    CTable("force", "F", "exact_force_table.py", kind="force", contact_end="ZS_FORCE"),
+    CTable("h1", "H", "ham1_table.py"),
+)
 #: (file name under generated/, "module:function") for codegen.BUILDERS
 C_FILES = [
     ("c/zener_sym.h", "zener_sym.codegen.c:build_header"),
@@ -59,7 +97,7 @@ def _inputs() -> list[pathlib.Path]:
     gen = generated_dir()
     files = sorted(derivation_dir().glob("*.py")) + sorted(_HERE.parent.glob("*.py"))
     files += sorted(_HERE.glob("*.py")) + sorted(_HERE.glob("*.in"))
-    files += [gen / f for _, _, f in EXACT_TABLES + FORCE_TABLES] + [gen / HAM1_TABLE]
+    files += [gen / t.file for t in TABLES]
     return files
 
 
@@ -70,8 +108,7 @@ def inputs_hash() -> str:
 
 def _c_header(description: str) -> str:
     srcs = ["zener_sym.codegen.ham_exprs", "zener_sym.codegen.c"]
-    srcs += [f"generated/{f}" for _, _, f in EXACT_TABLES + FORCE_TABLES]
-    srcs += [f"generated/{HAM1_TABLE}"]
+    srcs += [f"generated/{t.file}" for t in TABLES]
     return (f"/* {description}\n *\n"
             " * GENERATED by `zener-sym regen kernels`: DO NOT EDIT. Change the derivation, the"
             " codegen\n * or the tables and regenerate; `zener-sym regen --check kernels` fails"
@@ -82,60 +119,85 @@ def _c_header(description: str) -> str:
             f" * SymPy version: {sympy.__version__}\n */\n")
 
 
+def _ends(tables: Sequence[CTable]) -> list[CTable]:
+    return [t for t in tables if t.contact_end is not None]
+
+
 def build_header() -> str:
     """generated/c/zener_sym.h: the API."""
-    gen = generated_dir()
-    ns = _tables.load(gen / EXACT_TABLES[0][2])
+    ends = _ends(TABLES)
+    pieces = ends[0].module()["TABLE_PIECES"]
     text = _rt.HEADER
-    for key, val in (("LAM_MIN", _tables.num(ns["TABLE_PIECES"][0][1])),
-                     ("LAM_MAX", _tables.num(ns["TABLE_PIECES"][-1][2])),
+    for key, val in (("LAM_MIN", _tables.num(pieces[0][1])),
+                     ("LAM_MAX", _tables.num(pieces[-1][2])),
                      ("LAM_CRIT", str(_ham.lam_crit())),
-                     ("ENDS", ", ".join(m for _, m, _ in EXACT_TABLES + FORCE_TABLES)
+                     ("ENDS", ", ".join(str(t.contact_end) for t in ends)
                       + "; any other returns ZS_EDOM")):
         text = text.replace(f"@{key}@", val)
     return _c_header("zener_sym.h: C99 API of zener-sym (exact tables and HAM kernels).") + text
 
 
-def _table_switch(tables: list[tuple[str, str, str]],
-                  emit: Callable[[str, dict[str, Any]], tuple[str, dict[str, int]]], prefix: str,
-                  data: list[str], sizes: dict[str, int], note: str = "") -> list[str]:
-    """The C data of each table of one kind (appended to ``data``, ``sizes`` raised to theirs)
-    and the ``switch (contact_end)`` that returns the table of an end of contact."""
-    switch = ["    switch (contact_end) {"]
-    for name, macro, fname in tables:
-        text, sz = emit(name, _tables.load(generated_dir() / fname))
-        data.append(text)
-        sizes.update({k: max(sizes[k], sz[k]) for k in sizes})
-        switch.append(f"    case {macro}:\n        return &{prefix}{name};")
-    return switch + [f"    default:\n        return NULL;{note}", "    }"]
+def tables_c(tables: Sequence[CTable]) -> tuple[str, str, str, dict[str, int]]:
+    """The C of the tables: their data, their enums (one set per tag), the array of the ends of
+    contact (``zs__ends``) and the sizes the runtime's buffers need.
 
+    Parameters
+    ----------
+    tables : sequence of CTable
+        The tables.
 
-def build_source() -> str:
-    """generated/c/zener_sym.c: table data, printed HAM formulas and the runtime."""
-    gen = generated_dir()
+    Returns
+    -------
+    tuple
+        Data, enums, ends and sizes (``tables.SIZES``).
+    """
     data: list[str] = []
-    sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": 2}
-    switch = _table_switch(EXACT_TABLES, _tables.exact_table_c, "zs__tab_", data, sizes,
-                           " /* no table (yet) for this end of contact */")
-    fswitch = _table_switch(FORCE_TABLES, _tables.force_table_c, "zs__ftab_", data, sizes)
-    h1, h1_deg = _tables.ham1_table_c(_tables.load(gen / HAM1_TABLE))
+    enums: dict[str, str] = {}
+    sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": 2, "max_tp": 1}
+    for t in tables:
+        d = _tables.describe(t.module())
+        text, sz = _tables.table_c(t.name, d, t.fold_x)
+        data.append(text)
+        sizes = {k: max(v, sz[k]) for k, v in sizes.items()}
+        e = _tables.enums_c(t.tag, d)
+        if enums.setdefault(t.tag, e) != e:
+            raise ValueError(f"tables of tag {t.tag} with other names: {t.name}'s differ")
+    rows = [f"    {{{t.contact_end}, &zs__tab_{t.name}, &zs__kind_{t.kind}}}"
+            for t in _ends(tables)]
+    ends = (f"static const zs__end_t zs__ends[{len(rows)}] = {{\n" + ",\n".join(rows)
+            + "\n};")
+    return "".join(data), "".join(enums.values()), ends, sizes
+
+
+def build_source(extra: Sequence[CTable] = (), tables: Sequence[CTable] | None = None) -> str:
+    """generated/c/zener_sym.c: table data, printed HAM formulas and the runtime.
+
+    Parameters
+    ----------
+    extra : sequence of CTable
+        Tables emitted besides ``tables`` (a test's), the runtime's buffers sized for them too.
+    tables : sequence of CTable, optional
+        The tables the runtime serves, default ``TABLES`` (a test gives them other modules).
+
+    Returns
+    -------
+    str
+    """
+    data, enums, ends, sizes = tables_c([*(TABLES if tables is None else tables), *extra])
     types = _rt.TYPES
-    enums = "".join(_tables.field_enum(tag, keys) for tag, keys in (
-        ("X", _tables.EXACT_SUMMARY_KEYS), ("F", _tables.FORCE_SUMMARY_KEYS),
-        ("H", _tables.HAM1_KEYS)))
     for key, val in (("MAX_SUB", sizes["max_sub"]), ("MAX_ROWS", sizes["max_rows"]),
-                     ("MAX_LAMDEG", sizes["max_lamdeg"]),
-                     ("MAX_SUM", max(sizes["max_sum"], h1_deg)),
-                     ("MAX_NF", _tables.MAX_FIELDS), ("FIELDS", enums)):
+                     ("MAX_LAMDEG", sizes["max_lamdeg"]), ("MAX_SUM", sizes["max_sum"]),
+                     ("MAX_TP", sizes["max_tp"]), ("MAX_NF", _tables.MAX_FIELDS),
+                     ("FIELDS", enums)):
         types = types.replace(f"@{key}@", str(val))
     runtime = _rt.RUNTIME
-    for slot, text in (("TABLE_SWITCH", "\n".join(switch)), ("FORCE_SWITCH", "\n".join(fswitch)),
+    for slot, text in (("ENDS", ends),
                        ("EXP_CONSTANTS", _fastmath.exp_constants_c()),
                        ("EXP_POLY", _fastmath.exp_poly_c()),
                        ("LOG_POLY", _fastmath.log_poly_c())):
         runtime = runtime.replace(f"@{slot}@", text)
     text = (_c_header("zener_sym.c: exact tables, HAM kernels and their evaluation (C99, libm).")
-            + types + "".join(data) + h1 + _ham.ham_c() + runtime)
+            + types + data + _ham.ham_c() + runtime)
     left = sorted(set(re.findall(r"@[A-Z_]+@", text)))
     if left:
         raise ValueError(f"C templates: slots {left} not filled by build_source")

@@ -1,35 +1,37 @@
-"""C data for the Chebyshev tables: the exact model's (``generated/exact_table.py`` layout) and
-the ham1 summary's (``generated/ham1_table.py``).
+"""C data of the Chebyshev tables, every table by one emitter (:func:`table_c`) from the
+description its generated module holds.
 
 The table modules are read as data (``runpy`` on the file in generated/, not imported: codegen
-sits below generated/ and must run when those files are stale). Every coefficient is written
-with the digits the Python file holds (the history's strings verbatim, the summary's floats by
-``repr``), so C and numpy evaluate the same numbers.
+sits below generated/ and must run when those files are stale). What the C code needs of a table
+comes from the module itself (:func:`describe`): its lambda pieces and fields (``TABLE_PIECES``,
+``TABLE_FIELDS``, the ``TABLE_*`` lines of ``numerics.cheb_table.TableSpec``), its summary series
+(``SUMMARY``), its history
+(``HISTORY``: the time pieces, the two fields and the sub-pieces are read from its keys and
+entries; ``TIME_PIECES``, ``HISTORY_KEYS`` and ``N_SUB`` where written only order and check them)
+and its own scalar constants (the layout of its time maps). No field list is written here: the
+C enums that name the fields' positions (:func:`enums_c`) are generated from the same
+description, so a table with other fields is read by other names, never misread.
 
-``exact_table_c(name, ns)`` is generic over a table module with the exact table's layout
-(``TABLE_PIECES``, whose ln-lambda pieces start at LOG_FROM, ``HISTORY_TO``, ``C_STRETCH``,
-``C_END``, ``S_ORBIT``, ``S_TRANSIENT``, ``N_SUB``, ``SUMMARY``, ``HISTORY``): another end of contact with its own table
-is one more entry in ``zener_sym.codegen.c.EXACT_TABLES``.
+Every coefficient is written with the digits the Python file holds (the history's strings
+verbatim, the summary's floats by ``repr``), so C and numpy evaluate the same numbers.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
+import re
 import runpy
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from fractions import Fraction
 from typing import Any, SupportsFloat
 
 import mpmath
 
-#: Summary fields of an exact table, in the order the C code reads them (zs__S_* indices).
-EXACT_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "int_F2", "rest_over_lam")
-#: Time pieces of the history, in the C code's order.
-TIME_PIECES = ("C", "A", "M", "B")
-#: ham1 table fields, in the C code's order.
-HAM1_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "impulse", "int_F2")
 #: Fields a summary table may have in C (ZS__MAX_NF of types.c.in).
 MAX_FIELDS = 16
+#: Fields of a history: two, side by side in each coefficient matrix (``zs__mat``).
+HISTORY_FIELDS = 2
 
 
 def load(path: str | os.PathLike[str]) -> dict[str, Any]:
@@ -95,50 +97,12 @@ def pieces_c(p: str, pieces: Sequence[Sequence[Any]]) -> tuple[str, list[float],
     return text, ga, gb
 
 
-def log_start(pieces: Sequence[Sequence[Any]]) -> float:
-    """Where a table's ln-lambda pieces start (its TABLE_PIECES; ``TableSpec.log_from``)."""
-    return min((float(a) for k, a, _ in pieces if k == "log"), default=math.inf)
-
-
 def _pieces_init(p: str, n: int) -> str:
     return f"{{{n}, {p}_edges, {p}_ga, {p}_gb, {p}_kind}}"
 
 
-def exact_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
-    """C text defining ``static const zs__exact_table zs__tab_<name>``, and its sizes."""
-    pieces = tuple(ns.get("TIME_PIECES", TIME_PIECES))
-    if pieces != TIME_PIECES or tuple(ns.get("HISTORY_KEYS", ("f", "I"))) != ("f", "I"):
-        raise ValueError(f"table {name}: time pieces {pieces}; the C runtime evaluates "
-                         f"{TIME_PIECES} with fields ('f', 'I') (add the new maps to "
-                         "codegen/c/runtime.c.in first)")
-    pieces = ns["TABLE_PIECES"]
-    edges = [float(a) for _, a, _ in pieces] + [float(pieces[-1][2])]
-    n_lam = len(pieces)
-    log_from = log_start(ns["TABLE_PIECES"])
-    hist_to = float(ns["HISTORY_TO"])
-    p = f"zs__{name}"
-    out = [f"/* ---- exact table '{name}': {n_lam} lambda pieces ---- */\n"]
-    sizes = {"max_lamdeg": 0, "max_rows": 0, "max_sub": 0, "max_sum": 0}
-    # x = g k - o, a summary's piece variable without a division (IEEE operations on the
-    # written doubles: the same on every machine)
-    summary, init, sizes["max_sum"] = summary_c(p, ns, EXACT_SUMMARY_KEYS, fold_x=True)
-    out.append(summary)
-    # history: per time piece and field, per lambda piece and sub-piece, a [rows][cols] matrix
-    n_hist = sum(1 for b in edges[1:] if b <= hist_to)
-    tpieces = _history_c(name, p, ns, TIME_PIECES, ("f", "I"), n_lam, out, sizes)
-    for key in ("max_lamdeg", "max_sum"):
-        sizes[key] = max(sizes[key], 2)
-    out.append(
-        f"static const zs__exact_table zs__tab_{name} = {{\n"
-        f"    {init},\n    {n_hist}, {num(hist_to)},\n"
-        f"    {num(log_from)}, {num(ns['C_STRETCH'])}, {num(ns['C_END'])}, "
-        f"{num(ns['S_ORBIT'])}, {num(ns['S_TRANSIENT'])},\n"
-        f"    {{{', '.join(tpieces)}}}\n}};\n\n")
-    return "".join(out), sizes
-
-
-def summary_c(p: str, ns: dict[str, Any], keys: Sequence[str], fold_x: bool = False,
-              summary_name: str = "SUMMARY") -> tuple[str, str, int]:
+def summary_c(p: str, ns: Mapping[str, Any], keys: Sequence[str], fold_x: bool = False,
+              summary_name: str | None = None) -> tuple[str, str, int]:
     """C text of a table's summary series as the one ``zs__sumtab`` shape every table has
     (evaluated by the runtime's ``zs__eval``): its arrays, the ``zs__sumtab`` initialiser that
     points to them, and its largest degree.
@@ -159,8 +123,8 @@ def summary_c(p: str, ns: dict[str, Any], keys: Sequence[str], fold_x: bool = Fa
         The fields, in the order the C code reads them (``field_enum``).
     fold_x : bool
         Also write x = g xk - xo per piece (a summary's variable without a division).
-    summary_name : str
-        The name the module assigns its series to.
+    summary_name : str, optional
+        The name the module assigns its series to (default ``SUMMARY``, every generated table's).
 
     Returns
     -------
@@ -169,13 +133,14 @@ def summary_c(p: str, ns: dict[str, Any], keys: Sequence[str], fold_x: bool = Fa
     """
     if not 0 < len(keys) <= MAX_FIELDS:
         raise ValueError(f"table {p}: {len(keys)} fields; the C runtime sums 1 to {MAX_FIELDS}")
+    series = ns[summary_name or summary_name_of(ns)]
     pieces = ns["TABLE_PIECES"]
     n_lam = len(pieces)
     text, ga, gb = pieces_c(p, pieces)
     out = [text]
     ptrs, lens, top = [], [], 0
     for ip in range(n_lam):
-        cs = [list(ns[summary_name][key][ip]) for key in keys]
+        cs = [list(series[key][ip]) for key in keys]
         deg = max(len(c) for c in cs)
         vals = [c[j] if j < len(c) else 0.0 for j in range(deg) for c in cs]
         out.append(_array(f"{p}_s{ip}", vals, per_line=len(keys)))
@@ -193,11 +158,155 @@ def summary_c(p: str, ns: dict[str, Any], keys: Sequence[str], fold_x: bool = Fa
     return "".join(out), init, top
 
 
+def summary_name_of(ns: Mapping[str, Any]) -> str:
+    """``SUMMARY``, the name every generated table module assigns its summary series to; a
+    ValueError for a module without it."""
+    if "SUMMARY" not in ns:
+        raise ValueError("table module without summary series: it assigns no SUMMARY")
+    return "SUMMARY"
+
+
+#: A name the C code spells from a table's own (a field, a time piece, a constant).
+_C_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
+
+
+@dataclasses.dataclass(frozen=True)
+class Description:
+    """What the C code needs of a table, read from its generated module (:func:`describe`).
+
+    Attributes
+    ----------
+    pieces : tuple of (str, float, float)
+        The lambda pieces (``TABLE_PIECES``).
+    fields : tuple of str
+        The summary's fields, in the order of its blocks (``TABLE_FIELDS``).
+    summary : mapping
+        field -> per lambda piece one Chebyshev series.
+    time_pieces : tuple of str
+        The history's time pieces (empty: a summary alone).
+    history_fields : tuple of str
+        The history's two fields, in the order of each matrix's pair.
+    n_sub : tuple of int
+        Sub-pieces per time piece.
+    n_hist : int
+        The history covers the first ``n_hist`` lambda pieces.
+    history : mapping
+        (time piece, field) -> per lambda piece per sub-piece a "rows cols v..." string.
+    constants : tuple of (str, float)
+        The module's own scalar constants (its time maps' layout), in the module's order.
+    """
+
+    pieces: tuple[tuple[str, float, float], ...]
+    fields: tuple[str, ...]
+    summary: Mapping[str, Sequence[Sequence[float]]]
+    time_pieces: tuple[str, ...] = ()
+    history_fields: tuple[str, ...] = ()
+    n_sub: tuple[int, ...] = ()
+    n_hist: int = 0
+    history: Mapping[tuple[str, str], Sequence[Sequence[str]]] = dataclasses.field(
+        default_factory=dict)
+    constants: tuple[tuple[str, float], ...] = ()
+
+    @property
+    def edges(self) -> list[float]:
+        """Every lambda piece's start and the last one's end."""
+        return [float(a) for _, a, _ in self.pieces] + [float(self.pieces[-1][2])]
+
+
+def _in_order(found: Sequence[str], written: Any, what: str) -> tuple[str, ...]:
+    """``found`` (in order of first appearance) in the order a module writes it, if it does."""
+    if written is None:
+        return tuple(found)
+    if sorted(written) != sorted(found):
+        raise ValueError(f"table module: {what} {tuple(written)} written, the history has "
+                         f"{tuple(found)}")
+    return tuple(written)
+
+
+def _history_of(ns: Mapping[str, Any], n_lam: int) -> dict[str, Any]:
+    """The history part of :class:`Description` from a module's ``HISTORY``."""
+    hist = ns["HISTORY"]
+    tps = _in_order(list(dict.fromkeys(tp for tp, _ in hist)), ns.get("TIME_PIECES"),
+                    "time pieces")
+    flds = _in_order(list(dict.fromkeys(f for _, f in hist)), ns.get("HISTORY_KEYS"),
+                     "history fields")
+    if len(flds) != HISTORY_FIELDS or any((tp, f) not in hist for tp in tps for f in flds):
+        raise ValueError(f"table module: history fields {flds} over time pieces {tps}; the C "
+                         f"runtime evaluates {HISTORY_FIELDS} fields in every time piece")
+    n_sub, n_hist = [], 0
+    for tp in tps:
+        counts = {len(subs) for f in flds for subs in hist[(tp, f)] if len(subs)}
+        if len(counts) != 1:
+            raise ValueError(f"table module: time piece {tp} has {sorted(counts)} sub-pieces; one "
+                             "count per time piece")
+        n_sub.append(counts.pop())
+        written = ns.get("N_SUB", {}).get(tp, n_sub[-1])
+        if written != n_sub[-1]:
+            raise ValueError(f"table module: time piece {tp} has {n_sub[-1]} sub-pieces, N_SUB "
+                             f"says {written}")
+        n_hist = max([n_hist] + [ip + 1 for f in flds
+                                 for ip, subs in enumerate(hist[(tp, f)]) if len(subs)])
+    if n_hist > n_lam:
+        raise ValueError(f"table module: a history on {n_hist} lambda pieces of {n_lam}")
+    return {"time_pieces": tps, "history_fields": flds, "n_sub": tuple(n_sub),
+            "n_hist": n_hist, "history": hist}
+
+
+def describe(ns: Mapping[str, Any]) -> Description:
+    """A table module's :class:`Description` (its ``TABLE_*`` lines, series, history and
+    constants).
+
+    Parameters
+    ----------
+    ns : mapping
+        The module's globals (``load``).
+
+    Returns
+    -------
+    Description
+
+    Raises
+    ------
+    ValueError
+        For a history the C runtime cannot evaluate, or a name C cannot spell.
+    """
+    pieces = tuple((str(k), float(a), float(b)) for k, a, b in ns["TABLE_PIECES"])
+    fields = tuple(str(f) for f in ns["TABLE_FIELDS"])
+    skip = {"INPUTS_HASH"}
+    consts = tuple((k, float(v)) for k, v in ns.items()
+                   if k.isupper() and not k.startswith(("TABLE_", "_")) and k not in skip
+                   and isinstance(v, (int, float)) and not isinstance(v, bool))
+    hist = _history_of(ns, len(pieces)) if "HISTORY" in ns else {}
+    d = Description(pieces=pieces, fields=fields, summary=ns[summary_name_of(ns)],
+                    constants=consts, **hist)
+    for name in (*d.fields, *d.time_pieces, *d.history_fields, *(k for k, _ in consts)):
+        if not _C_NAME.match(name):
+            raise ValueError(f"table module: the name {name!r} is no C identifier")
+    if "HISTORY_TO" in ns and d.n_hist and d.edges[d.n_hist] != float(ns["HISTORY_TO"]):
+        raise ValueError(f"table module: HISTORY_TO = {ns['HISTORY_TO']!r}, the history ends at "
+                         f"{d.edges[d.n_hist]!r}")
+    return d
+
+
 def field_enum(tag: str, keys: Sequence[str]) -> str:
-    """``enum { ZS__<tag>_<FIELD>, ..., ZS__N<tag> }``: the positions of a table's fields in its
-    summary blocks (``summary_c``'s ``keys``), by which the runtime reads them."""
+    """``enum { ZS__<tag>_<KEY>, ..., ZS__N<tag> }``: positions by name (``keys``' order)."""
     names = [f"ZS__{tag}_{k.upper()}" for k in keys] + [f"ZS__N{tag}"]
+    if len({n.upper() for n in names}) != len(names):
+        raise ValueError(f"C names {names}: two differ only in case")
     return "enum {\n    " + ",\n    ".join(names) + "\n};\n"
+
+
+def enums_c(tag: str, d: Description) -> str:
+    """The C enums of a table, generated from its description: its summary fields' positions
+    in its blocks (``ZS__<tag>_<FIELD>``, ``ZS__N<tag>``), its time pieces
+    (``ZS__<tag>P_<PIECE>``), its history fields (``ZS__<tag>H_<FIELD>``) and its constants
+    (``ZS__<tag>K_<NAME>``), by which the runtime's code for the table reads them."""
+    out = field_enum(tag, d.fields)
+    for sfx, keys in (("P", d.time_pieces), ("H", d.history_fields),
+                      ("K", [k for k, _ in d.constants])):
+        if keys:
+            out += field_enum(tag + sfx, keys)
+    return out
 
 
 def _cheb_to_monomial_exact(n: int) -> list[list[Fraction]]:
@@ -231,103 +340,110 @@ def _to_monomial(vals: list[str], rows: int, cols: int,
 ROW_BLOCK = 4
 
 
-def _history_c(name: str, p: str, ns: dict[str, Any], pieces: Sequence[str], keys: Sequence[str],
-               n_lam: int, out: list[str], sizes: dict[str, int]) -> list[str]:
+def _history_c(p: str, d: Description, out: list[str], sizes: dict[str, int]) -> list[str]:
     """Append to ``out`` the history of every time piece and return the ``zs__tpiece``
-    initialisers, in ``pieces`` order. Per lambda piece and sub-piece one matrix
-    [lambda degree k][time power j][field] (``keys``' two fields interleaved, zero-padded to the
+    initialisers, in the description's order. Per lambda piece and sub-piece one matrix
+    [lambda degree k][time power j][field] (the two fields interleaved, zero-padded to the
     larger degrees): the time direction converted from Chebyshev to monomials in the
     sub-piece's x here, once, so the C code only contracts in lambda (per call, contiguous rows
     of field pairs) and evaluates Horner's rule per point. A lambda piece without history gets
     empty entries. ``sizes`` is updated."""
     pieces_c = []
-    convs = {}
-    for tp in pieces:
-        n_sub = int(ns["N_SUB"][tp])
+    convs: dict[int, list[list[Fraction]]] = {}
+    for tp, n_sub in zip(d.time_pieces, d.n_sub):
         sizes["max_sub"] = max(sizes["max_sub"], n_sub)
-        per = [ns["HISTORY"][(tp, fld)] for fld in keys]
+        per = [d.history[(tp, fld)] for fld in d.history_fields]
         entries = []
-        for ip in range(n_lam):
+        for ip in range(len(d.pieces)):
             subs = [f[ip] if ip < len(f) else () for f in per]
-            if not len(subs[0]) and not len(subs[1]):
+            if not any(len(sb) for sb in subs):
                 entries.extend(["{0, 0, 0, NULL, {0}}"] * n_sub)
                 continue
-            for fld, sb in zip(keys, subs):
-                if len(sb) != n_sub:
-                    raise ValueError(f"table {name}: piece {tp}/{fld} has {len(sb)} sub-pieces, "
-                                     f"N_SUB says {n_sub}")
             for s in range(n_sub):
                 mats = []
-                for fld, sb in zip(keys, subs):
+                for fld, sb in zip(d.history_fields, subs):
                     parts = sb[s].split()
                     rows, cols = int(parts[0]), int(parts[1])
                     if len(parts) - 2 != rows * cols:
-                        raise ValueError(f"table {name}: malformed array {tp}/{fld}/{ip}/{s}")
+                        raise ValueError(f"table {p}: malformed array {tp}/{fld}/{ip}/{s}")
                     if rows not in convs:
                         convs[rows] = _cheb_to_monomial_exact(rows)
                     mats.append(_to_monomial(parts[2:], rows, cols, convs[rows]))
-                R = max(len(m) for m in mats)
-                K = max(len(m[0]) for m in mats)
-                # rows zero-padded to a multiple of ROW_BLOCK: the C contraction then runs in
-                # whole blocks of registers (Horner still starts at row R - 1)
-                rp = -(-R // ROW_BLOCK) * ROW_BLOCK
-                vals = [m[j][k] if j < len(m) and k < len(m[j]) else 0.0
-                        for k in range(K) for j in range(rp) for m in mats]
-                # per block of ROW_BLOCK rows, the lambda degrees up to its last nonzero (at
-                # least 1): beyond them the contraction would add exact zeros
-                bcols = []
-                for b0 in range(0, rp, ROW_BLOCK):
-                    nz = [k for k in range(K) for j in range(b0, b0 + ROW_BLOCK) for m in mats
-                          if j < len(m) and k < len(m[j]) and m[j][k] != 0.0]
-                    bcols.append(str(max(nz, default=0) + 1))
-                if K > 255:
-                    raise ValueError(f"table {name}: {K} lambda degrees in {tp}/{ip}/{s}; the C "
-                                     "layout counts them in an unsigned char (at most 255)")
-                arr = f"{p}_{tp}_{ip}_{s}"
-                out.append(_array(arr, vals, per_line=6))
-                entries.append(f"{{{rp}, {K}, {R}, {arr}, {{{', '.join(bcols)}}}}}")
-                sizes["max_rows"] = max(sizes["max_rows"], rp)
-                sizes["max_lamdeg"] = max(sizes["max_lamdeg"], K)
+                entries.append(_matrix_c(f"{p}_{tp}_{ip}_{s}", mats, out, sizes))
         out.append(f"static const zs__mat {p}_{tp}[{len(entries)}] = {{\n    "
                    + ",\n    ".join(entries) + "\n};\n")
         pieces_c.append(f"{{{n_sub}, {p}_{tp}}}")
     return pieces_c
 
-def ham1_table_c(ns: dict[str, Any]) -> tuple[str, int]:
-    """C text of the ham1 summary table (``static const zs__sumtab zs__h1``), and its largest
-    degree."""
-    text, init, deg = summary_c("zs__h1", ns, HAM1_KEYS)
-    return ("/* ---- ham1 summary table ---- */\n" + text
-            + f"static const zs__sumtab zs__h1 = {init};\n\n"), deg
+
+def _matrix_c(arr: str, mats: list[list[list[float]]], out: list[str],
+              sizes: dict[str, int]) -> str:
+    """One sub-piece's matrices as the array ``arr`` (appended to ``out``) and its ``zs__mat``
+    initialiser."""
+    R = max(len(m) for m in mats)
+    K = max(len(m[0]) for m in mats)
+    # rows zero-padded to a multiple of ROW_BLOCK: the C contraction then runs in whole blocks
+    # of registers (Horner still starts at row R - 1)
+    rp = -(-R // ROW_BLOCK) * ROW_BLOCK
+    vals = [m[j][k] if j < len(m) and k < len(m[j]) else 0.0
+            for k in range(K) for j in range(rp) for m in mats]
+    # per block of ROW_BLOCK rows, the lambda degrees up to its last nonzero (at least 1):
+    # beyond them the contraction would add exact zeros
+    bcols = []
+    for b0 in range(0, rp, ROW_BLOCK):
+        nz = [k for k in range(K) for j in range(b0, b0 + ROW_BLOCK) for m in mats
+              if j < len(m) and k < len(m[j]) and m[j][k] != 0.0]
+        bcols.append(str(max(nz, default=0) + 1))
+    if K > 255:
+        raise ValueError(f"{arr}: {K} lambda degrees; the C layout counts them in an unsigned "
+                         "char (at most 255)")
+    out.append(_array(arr, vals, per_line=6))
+    sizes["max_rows"] = max(sizes["max_rows"], rp)
+    sizes["max_lamdeg"] = max(sizes["max_lamdeg"], K)
+    return f"{{{rp}, {K}, {R}, {arr}, {{{', '.join(bcols)}}}}}"
 
 
-#: Summary fields of a force-free-end table the C code reads (zs__F_* order).
-FORCE_SUMMARY_KEYS = ("delta_m", "tau_dc", "log_tau_d", "log_e", "xi_over_lam", "log_F_m",
-                      "log_int_F2", "log_tau_p")
-#: Time pieces and fields of a force-free-end history, in the C code's order.
-FORCE_TIME_PIECES = ("C", "R")
-FORCE_HISTORY_KEYS = ("f", "v")
+#: The sizes the runtime's buffers need (``ZS__MAX_*`` of types.c.in), raised to each table's.
+SIZES = ("max_lamdeg", "max_rows", "max_sub", "max_sum", "max_tp")
 
 
-def force_table_c(name: str, ns: dict[str, Any]) -> tuple[str, dict[str, int]]:
-    """C text defining ``static const zs__force_table zs__ftab_<name>`` (a force-free-end table,
-    ``generated/exact_force_table.py`` layout: summary in sqrt(lambda) below LOG_FROM, ln lambda
-    above; history in time pieces C and R, fields f and v), and its sizes."""
-    if (tuple(ns.get("TIME_PIECES", ())) != FORCE_TIME_PIECES
-            or tuple(ns.get("HISTORY_KEYS", ())) != FORCE_HISTORY_KEYS):
-        raise ValueError(f"force table {name}: time pieces {ns.get('TIME_PIECES')}, fields "
-                         f"{ns.get('HISTORY_KEYS')}; the C runtime evaluates "
-                         f"{FORCE_TIME_PIECES} with {FORCE_HISTORY_KEYS}")
-    keys = tuple(ns.get("TABLE_FIELDS", ()))
-    missing = [k for k in FORCE_SUMMARY_KEYS if k not in keys]
-    if missing:
-        raise ValueError(f"force table {name}: summary keys {missing} missing")
-    n_lam = len(ns["TABLE_PIECES"])
-    p = f"zs__f{name}"
-    summary, init, deg = summary_c(p, ns, FORCE_SUMMARY_KEYS)
-    out = [f"/* ---- force-free-end summary table '{name}' ---- */\n", summary]
-    sizes = {"max_lamdeg": 2, "max_rows": 1, "max_sub": 1, "max_sum": max(2, deg)}
-    tpieces = _history_c(name, p, ns, FORCE_TIME_PIECES, FORCE_HISTORY_KEYS, n_lam, out, sizes)
-    out.append(f"static const zs__force_table zs__ftab_{name} = {{\n"
-               f"    {init},\n    {{{', '.join(tpieces)}}}\n}};\n\n")
+def table_c(name: str, d: Description, fold_x: bool = False) -> tuple[str, dict[str, int]]:
+    """THE table emitter: C text defining ``static const zs__table zs__tab_<name>`` (its summary
+    as a ``zs__sumtab``, its history's time pieces, its constants) from its description, and
+    the sizes it needs.
+
+    Parameters
+    ----------
+    name : str
+        The table's C name.
+    d : Description
+        The table (``describe``).
+    fold_x : bool
+        ``summary_c``'s: also write the summary's variable without a division.
+
+    Returns
+    -------
+    tuple
+        The C text and its sizes (keys ``SIZES``).
+    """
+    p = f"zs__{name}"
+    hist = f", history on {d.n_hist}, time pieces {', '.join(d.time_pieces)}" if d.n_hist else ""
+    out = [f"/* ---- table '{name}': {len(d.pieces)} lambda pieces{hist} ---- */\n"]
+    sizes = dict.fromkeys(SIZES, 0)
+    summary, init, sizes["max_sum"] = summary_c(
+        p, {"TABLE_PIECES": d.pieces, "SUMMARY": d.summary}, d.fields, fold_x=fold_x)
+    out.append(summary)
+    tpieces = _history_c(p, d, out, sizes)
+    sizes["max_tp"] = len(tpieces)
+    tp_ptr = consts = "NULL"
+    if tpieces:
+        out.append(f"static const zs__tpiece {p}_tp[{len(tpieces)}] = "
+                   f"{{{', '.join(tpieces)}}};\n")
+        tp_ptr = f"{p}_tp"
+    if d.constants:
+        out.append(_array(f"{p}_k", [v for _, v in d.constants]))
+        consts = f"{p}_k"
+    out.append(f"static const zs__table zs__tab_{name} = {{\n    {init},\n"
+               f"    {d.n_hist}, {num(d.edges[d.n_hist])}, {len(tpieces)}, {tp_ptr}, {consts}\n"
+               "};\n\n")
     return "".join(out), sizes

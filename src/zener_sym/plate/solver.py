@@ -93,8 +93,10 @@ class _Run:
 
 
 def _contact(r: Rates, c_res: float, h: float, kernels: dict[float, Kernel], t_s: float,
-             x_s: float, v_s: float, B_s: ComplexArray, max_steps: int) -> ContactRun:
-    """One contact at step h, re-run on a finer grid when it has fewer than N_MIN nodes."""
+             x_s: float, v_s: float, B_s: ComplexArray, max_steps: int, q: int) -> ContactRun:
+    """One contact at step h / 2^q, re-run on a finer grid when it has fewer than N_MIN nodes
+    (the run's ``h`` says which grid it ended on)."""
+    h = h / 2.0**q
     for _ in range(40):
         if h not in kernels:
             # a Hertz contact lasts 3.2 (slower approaches a little longer): one growth at most
@@ -111,7 +113,11 @@ def _contact(r: Rates, c_res: float, h: float, kernels: dict[float, Kernel], t_s
     return run
 
 
-def _run(r: Rates, c_res: float, h: float, max_contacts: int, max_steps: int) -> _Run:
+def _run(r: Rates, c_res: float, h: float, max_contacts: int, max_steps: int,
+         refine: list[int]) -> _Run:
+    """The whole impact at step h. ``refine[j]``: contact j is stepped at h / 2^refine[j] (a
+    short contact's finer grid, found on the coarsest level and kept on the finer ones, so that
+    every contact's steps stay in the ratio 2 from level to level); grown here as needed."""
     kernels: dict[float, Kernel] = {}
     fl = Flight(0.0, 0.0, 1.0, np.zeros(len(r.s), dtype=complex))
     t_s: float | None = 0.0
@@ -120,12 +126,26 @@ def _run(r: Rates, c_res: float, h: float, max_contacts: int, max_steps: int) ->
         if len(runs) >= max_contacts:
             raise RuntimeError(f"more than max_contacts = {max_contacts} contacts")
         x_s, B_s = fl.advanced(r, t_s)
-        run = _contact(r, c_res, h, kernels, t_s, x_s, fl.v, B_s, max_steps)
+        j = len(runs)
+        if j == len(refine):
+            refine.append(0)
+        run = _contact(r, c_res, h, kernels, t_s, x_s, fl.v, B_s, max_steps, refine[j])
+        refine[j] = max(refine[j], round(math.log2(h / run.h)))
         runs.append(run)
         fl = Flight(run.t_e, run.x_e, run.v_e, run.B_e)
         t_s = next_contact(r, fl, 1.0)
     end = fl.t_r + max(0.0, (fl.x_r + end_bound(r, fl.B)) / -fl.v) if fl.v < 0 else fl.t_r
     return _Run(runs, end)
+
+
+def _comparable(levels: list[_Run]) -> bool:
+    """Whether the levels have the same contacts, each stepped twice as finely as on the level
+    before: otherwise their differences say nothing of the error (two levels on the same grid
+    agree exactly, whatever their error)."""
+    if len({len(lv.contacts) for lv in levels}) != 1:
+        return False
+    return all(math.isclose(a.h, 2.0 * b.h, rel_tol=1e-12)
+               for lo, hi in zip(levels, levels[1:]) for a, b in zip(lo.contacts, hi.contacts))
 
 
 def _fields(r: Rates, run: _Run) -> list[dict[str, float]]:
@@ -178,18 +198,19 @@ def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float 
     h0 = float(h) if h is not None else min(0.05, 12.0 * rtol ** 0.4)
     if not (math.isfinite(h0) and h0 > 0.0):
         raise ValueError(f"h must be a finite step > 0, got {h!r}")
-    levels = [_run(r, c_res, h0 / 2.0**i, max_contacts, max_steps) for i in range(3)]
+    refine: list[int] = []
+    levels = [_run(r, c_res, h0 / 2.0**i, max_contacts, max_steps, refine) for i in range(3)]
     hk = h0 / 4.0
     for _ in range(max_halvings + 1):
         rows = [_fields(r, lv) for lv in levels]
-        if len({len(x) for x in rows}) == 1:
+        if _comparable(levels):
             r1, r2 = _richardson(rows[0], rows[1]), _richardson(rows[1], rows[2])
             errs = [{f: SAFETY * abs(b[f] - a[f]) for f in CONTACT_FIELDS} for a, b in zip(r1, r2)]
             e = r2[-1]["speed_after"]
             if errs[-1]["speed_after"] <= rtol * max(abs(e), E_FLOOR):
                 return _result(r2, errs, levels[2], hk, len(omega), loss, rtol)
         hk /= 2.0
-        levels = [levels[1], levels[2], _run(r, c_res, hk, max_contacts, max_steps)]
+        levels = [levels[1], levels[2], _run(r, c_res, hk, max_contacts, max_steps, refine)]
     raise RuntimeError(f"e did not reach rtol = {rtol:g} by h = {hk:.3g} (contacts per level: "
                        f"{[len(lv.contacts) for lv in levels]})")
 
@@ -197,10 +218,16 @@ def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float 
 def _result(rows: list[dict[str, float]], errs: list[dict[str, float]], run: _Run, h: float,
             n: int, loss: float, rtol: float) -> PlateImpact:
     contacts = tuple(PlateContact(**row) for row in rows)
+    t = [cr.t_s + cr.h * np.arange(len(cr.F)) for cr in run.contacts]
+    f = [cr.F for cr in run.contacts]
+    ends = [np.array([cr.t_e]) for cr in run.contacts]
+    zero = np.zeros(1)
     return PlateImpact(contacts=contacts, e=rows[-1]["speed_after"],
                        plate_energy=rows[-1]["plate_energy"], error=errs[-1]["speed_after"],
                        errors=tuple(errs), end_time=run.end_time, h=h, n_modes=n,
-                       loss=float(loss), rtol=rtol)
+                       loss=float(loss), rtol=rtol,
+                       force_time=np.concatenate([a for pair in zip(t, ends) for a in pair]),
+                       force=np.concatenate([a for fk in f for a in (fk, zero)]))
 
 
 def choose_modes(make: Callable[[int], ModalPlate], *, rtol: float = 1e-6, loss: float = 0.0,

@@ -10,10 +10,11 @@ each node (:mod:`.stepping`); the modes are propagated exactly (:mod:`.kernels`)
 the step. Between contacts the motion is known in closed form and the next contact, or the proved
 end, is found by :mod:`.flight`. The whole impact is run at steps 4h, 2h and h; Richardson's
 extrapolation (order 2) of the last two pairs gives two estimates whose difference is the
-reported error (times a safety factor 2), and h is halved until that error is below rtol |e|.
-The impulse that linear pieces miss where the force starts and ends as a 3/2 power (Navot's
-extension of Euler-Maclaurin, :func:`.stepping.end_defect`) is added at each start and end, so
-the error left is smooth in h and the extrapolation works.
+reported error (times a safety factor 2; for e, the largest over the contacts' speeds, see
+SAFETY), and h is halved until that error is below rtol |e|. The impulse that linear pieces miss
+where the force starts and ends as a 3/2 power (Navot's extension of Euler-Maclaurin,
+:func:`.stepping.end_defect`) is added at each start and end, so the error's leading terms are
+smooth in h and the extrapolation works.
 """
 from __future__ import annotations
 

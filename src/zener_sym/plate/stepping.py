@@ -6,10 +6,11 @@ t_k = t_s + k h. The approach at node k is then
     delta_k = d_k - sum_{j<k} L_{k-j} F_j - (L_0 + C_res) F_k,
 
 with d_k the free motion of ball and modes from the start state (exact) and L the hat responses
-of :mod:`.kernels`, so each step costs one dot product and a scalar Newton solve of
-F_k = max(delta_k, 0)^{3/2}. When delta_k <= 0 the contact has ended inside the last step: its end
-t_e is where the force, linear from F_{k-1} to 0 over [t_{k-1}, t_e], brings delta back to 0
-(a scalar root in the partial step's width, which exists because delta_{k-1} > 0 >= delta_k).
+of :mod:`.kernels`, so each step costs its share of a block's history product and a scalar
+Newton solve of F_k = max(delta_k, 0)^{3/2}. When delta_k <= 0 the contact has ended inside the
+last step: its end t_e is where the force, linear from F_{k-1} to 0 over [t_{k-1}, t_e], brings
+delta back to 0 (a scalar root in the partial step's width, which exists because
+delta_{k-1} > 0 >= delta_k; found by Newton kept inside that bracket).
 """
 from __future__ import annotations
 

@@ -51,11 +51,10 @@ from typing import Any
 
 import numpy as np
 
-from ..plate.kernels import Rates
 from ..plate.modal import ModalPlate
 from ..plate.modes import modal_plate
 from ..plate.result import PlateImpact
-from ..plate.solver import RTOL_MAX, RTOL_MIN, _run, check_plate, choose_modes, solve
+from ..plate.solver import RTOL_MAX, RTOL_MIN, choose_modes, solve
 from ..typing import FloatArray
 from .base import FieldValues, Model, register
 
@@ -265,21 +264,11 @@ def _impact(*args: Any) -> PlateImpact:
     return _solved(*args)[1]
 
 
-@functools.lru_cache(maxsize=16)
 def _force_nodes(*args: Any) -> tuple[FloatArray, FloatArray]:
     """The force on the solver's finest grid: node times and forces, every contact (0 between
     contacts), piecewise linear in between (the solver's own force representation)."""
-    plate, res = _solved(*args)
-    omega, c, c_res = check_plate(plate)
-    # the finest of the solver's runs (its result is their Richardson extrapolation)
-    run = _run(Rates(omega, c, res.loss), c_res, res.h, len(res.contacts) + 1, 2_000_000)
-    t: list[float] = []
-    f: list[float] = []
-    for cr in run.contacts:
-        nodes = cr.t_s + cr.h * np.arange(len(cr.F))
-        t += [*nodes, cr.t_e]
-        f += [*cr.F, 0.0]
-    return np.array(t), np.array(f)
+    res = _solved(*args)[1]
+    return res.force_time, res.force
 
 
 def history_of(t_nodes: FloatArray, f_nodes: FloatArray, tau: FloatArray) -> FieldValues:

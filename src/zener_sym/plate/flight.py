@@ -23,12 +23,13 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..typing import FloatArray
-from .kernels import ComplexArray, Rates
+from .kernels import ComplexArray, Rates, powers, re_dot
 
 __all__ = ["Flight", "end_bound", "next_contact"]
 
-#: samples evaluated at once (modes x samples complex exponentials)
+#: samples evaluated at once, as _BLOCK-sample blocks
 _CHUNK = 2048
+_BLOCK = 64
 #: subdivision of a suspicious interval
 _SPLIT = 8
 
@@ -52,6 +53,25 @@ class Flight:
         """g(t) at one time (the root finder's function: no array bookkeeping)."""
         dt = t - self.t_r
         return self.x_r + self.v * dt - float((self.B * np.exp(r.s * dt)).real.sum())
+
+    def gap_grid(self, r: Rates, t_a: float, ds: float, n: int) -> FloatArray:
+        """g at t_a + j ds, j = 0 .. n-1 (t_a >= t_r): the modes' phases by products, not exps
+        (a block of powers of e^{s ds} times each block's start, one matrix product)."""
+        m = min(n, _BLOCK)
+        nb = -(-n // m)
+        W = powers(np.exp(r.s * ds), m)
+        Q = powers(np.exp(r.s * (m * ds)), nb) * (self.B * np.exp(r.s * (t_a - self.t_r)))[:, None]
+        w = re_dot(Q.T, np.ascontiguousarray(W.real), np.ascontiguousarray(W.imag)).ravel()[:n]
+        dt = (t_a - self.t_r) + ds * np.arange(n)
+        out: FloatArray = self.x_r + self.v * dt - w
+        return out
+
+    def gap_slope(self, r: Rates, t: float) -> tuple[float, float]:
+        """(g(t), g'(t)) from one set of exponentials."""
+        dt = t - self.t_r
+        Be = self.B * np.exp(r.s * dt)
+        return (self.x_r + self.v * dt - float(Be.real.sum()),
+                self.v - float((r.s * Be).real.sum()))
 
     def slope(self, r: Rates, t: float) -> float:
         """g'(t)."""
@@ -98,13 +118,16 @@ def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
     spacing = math.sqrt(2.0 * A / G2)     # G2 s^2 / 8 = A / 4
     tiny = scale * 1e-13
     while t_a < t_w:
-        n = min(_CHUNK, int(math.ceil((t_w - t_a) / spacing)) + 1)
-        t = np.linspace(t_a, min(t_w, t_a + (n - 1) * spacing), max(n, 2))
-        g = fl.gap(r, t)
-        ds = t[1] - t[0]
-        bad = np.nonzero(np.maximum(g[:-1], g[1:]) + G2 * ds * ds / 8.0 >= 0.0)[0]
+        n = max(min(_CHUNK, int(math.ceil((t_w - t_a) / spacing)) + 1), 2)
+        ds = min(spacing, (t_w - t_a) / (n - 1))
+        t = t_a + ds * np.arange(n)
+        g = fl.gap_grid(r, t_a, ds, n)
+        # the products' rounding (some n ulp of sum |B_n|) is allowed for
+        bad = np.nonzero(np.maximum(g[:-1], g[1:]) + (G2 * ds * ds / 8.0 + 1e-13 * n * A)
+                         >= 0.0)[0]
         for i in bad:
-            hit = _refine(r, fl, G2, t[i], t[i + 1], g[i], g[i + 1], tiny)
+            hit = _safe_steps(r, fl, G2, float(t[i]), float(t[i + 1]), float(g[i]),
+                              float(g[i + 1]), tiny)
             if hit is not None:
                 return hit
         t_a = float(t[-1])
@@ -112,6 +135,42 @@ def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
         raise RuntimeError(f"no contact found after tau = {fl.t_r:.6g} although the ball moves "
                            f"towards the plate (a graze below the search's resolution?)")
     return None
+
+
+#: Safe steps tried in an interval before it is subdivided instead (a graze)
+_SAFE_STEPS = 40
+
+
+def _safe_steps(r: Rates, fl: Flight, G2: float, a: float, b: float, ga: float, gb: float,
+                tiny: float) -> float | None:
+    """The first crossing of g = 0 in [a, b] (g(a) < 0), or None, by safe steps: from t, with
+    g'' <= G2, g(t + u) <= g + g' u + G2 u^2 / 2, which stays negative up to its root u*; so
+    t + u* never passes the first crossing, and near a crossing with g' > 0 the steps converge
+    to it quadratically. A crossing once bracketed is found by brentq; where the steps stall
+    (a graze), the interval is subdivided (:func:`_refine`)."""
+    if ga >= 0.0:
+        return a
+    t, g = a, ga
+    for _ in range(_SAFE_STEPS):
+        _, d = fl.gap_slope(r, t)
+        root = math.sqrt(d * d - 2.0 * G2 * g)
+        u = -2.0 * g / (d + root) if d > 0.0 else (root - d) / G2
+        t_new = t + u
+        if t_new >= b:
+            return None if gb < 0.0 else _bracketed(r, fl, t, b)
+        g_new = fl.gap1(r, t_new)
+        if g_new >= 0.0:
+            return _bracketed(r, fl, t, t_new)
+        if u < tiny:
+            break
+        t, g = t_new, g_new
+    return _refine(r, fl, G2, t, b, g, gb, tiny)
+
+
+def _bracketed(r: Rates, fl: Flight, a: float, b: float) -> float:
+    """The crossing in [a, b], g(a) < 0 <= g(b)."""
+    return float(brentq(lambda t: fl.gap1(r, t), a, b, xtol=1e-15 * max(abs(b), 1.0),
+                        rtol=8.9e-16))
 
 
 def _refine(r: Rates, fl: Flight, G2: float, a: float, b: float, ga: float, gb: float,
@@ -122,8 +181,7 @@ def _refine(r: Rates, fl: Flight, G2: float, a: float, b: float, ga: float, gb: 
     if max(ga, gb) + G2 * (b - a) ** 2 / 8.0 < 0.0:
         return None
     if gb >= 0.0 and (fl.slope(r, a) - G2 * (b - a) > 0.0 or b - a < tiny):
-        return float(brentq(lambda t: fl.gap1(r, t), a, b,
-                            xtol=1e-15 * max(abs(b), 1.0), rtol=8.9e-16))
+        return _bracketed(r, fl, a, b)
     if b - a < tiny:
         return None
     t = np.linspace(a, b, _SPLIT + 1)

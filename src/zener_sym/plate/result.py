@@ -1,7 +1,11 @@
 """What the finite-plate solver returns: one row per contact, and the impact's outcome."""
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..typing import FloatArray
 
 __all__ = ["PlateContact", "PlateImpact", "CONTACT_FIELDS"]
 
@@ -67,6 +71,10 @@ class PlateImpact:
         The modal loss factor eta.
     rtol : float
         The requested relative tolerance on e.
+    force_time, force : ndarray
+        The force history on the finest grid (not extrapolated): the node times of every
+        contact followed by its end, and the force there (0 at each start and end); the solver's
+        force is linear between them and 0 between contacts.
     """
 
     contacts: tuple[PlateContact, ...]
@@ -79,6 +87,9 @@ class PlateImpact:
     n_modes: int
     loss: float
     rtol: float
+    force_time: FloatArray = field(default_factory=lambda: np.zeros(0), compare=False,
+                                   repr=False)
+    force: FloatArray = field(default_factory=lambda: np.zeros(0), compare=False, repr=False)
 
     @property
     def n_contacts(self) -> int:

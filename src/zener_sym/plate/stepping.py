@@ -6,18 +6,19 @@ t_k = t_s + k h. The approach at node k is then
     delta_k = d_k - sum_{j<k} L_{k-j} F_j - (L_0 + C_res) F_k,
 
 with d_k the free motion of ball and modes from the start state (exact) and L the hat responses
-of :mod:`.kernels`, so each step costs one dot product and a scalar Newton solve of
-F_k = max(delta_k, 0)^{3/2}. When delta_k <= 0 the contact has ended inside the last step: its end
-t_e is where the force, linear from F_{k-1} to 0 over [t_{k-1}, t_e], brings delta back to 0
-(a scalar root in the partial step's width, which exists because delta_{k-1} > 0 >= delta_k).
+of :mod:`.kernels`, so each step costs its share of a block's history product and a scalar
+Newton solve of F_k = max(delta_k, 0)^{3/2}. When delta_k <= 0 the contact has ended inside the
+last step: its end t_e is where the force, linear from F_{k-1} to 0 over [t_{k-1}, t_e], brings
+delta back to 0 (a scalar root in the partial step's width, which exists because
+delta_{k-1} > 0 >= delta_k; found by Newton kept inside that bracket).
 """
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..typing import FloatArray
 from .kernels import ComplexArray, Kernel, Rates, psi2
@@ -73,7 +74,7 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
     Returns the forces and k. Raises RuntimeError past ``max_steps``.
     """
     h = kernel.h
-    n = max(kernel.E.shape[1] - 1, 64)
+    n = max(len(kernel.L) - 1, 64)
     F = np.zeros(1)
     k0 = 1
     while True:
@@ -81,9 +82,9 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
         m = np.arange(k0, n + 1)
         d_free: FloatArray = x_s + v_s * h * m.astype(float)
         if np.any(B_s):          # the plate at rest (the first contact) adds nothing
-            d_free = d_free - _combine(B_s, kernel.E[:, k0:n + 1]).real
+            d_free = d_free - kernel.series(B_s, n + 1)[k0:].real
         F = np.concatenate([F, np.zeros(n + 1 - len(F))])
-        k = _march(F, d_free, kernel.Lrev, kernel.L[0] + c_res, k0, n)
+        k = _march(F, d_free, kernel.L, kernel.L[0] + c_res, k0, n)
         if k is not None:
             return F[:k + 1], k
         if n >= max_steps:
@@ -92,42 +93,59 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
         k0, n = n + 1, min(2 * n, max_steps)
 
 
-def _combine(B: ComplexArray, E: ComplexArray) -> ComplexArray:
-    """B @ E without BLAS (a threaded complex BLAS costs more than it saves at these sizes)."""
-    out: ComplexArray = np.einsum("n,nm->m", B, E)
-    return out
+#: Nodes marched per block: the history of the nodes before a block enters it by one
+#: matrix-vector product, only the block's own nodes are added one by one.
+_BLOCK = 16
 
 
-def _march(F: FloatArray, d_free: FloatArray, Lrev: FloatArray, a: float, k0: int,
+def _march(F: FloatArray, d_free: FloatArray, L: FloatArray, a: float, k0: int,
            n: int) -> int | None:
     """Fill F[k0..n] until the force vanishes; that node's index, or None if it did not.
 
     ``d_free[k - k0]`` is the free approach at node k; F_k solves F = (d - a F)^{3/2} by Newton
-    on u = F^{1/3} (u^2 + a u^3 = d, convex: from above, Newton decreases monotonically).
+    on u = F^{1/3} (u^2 + a u^3 = d, convex: from above, Newton decreases monotonically; from
+    below, its first step lands above), started from the forces' quadratic extrapolation.
+    The nodes go by blocks of _BLOCK: sum_{j < k} L[kk - j] F_j for the block's nodes kk at once
+    (a Hankel view of L against the reversed forces), then the block's own terms in Python.
     """
-    top = len(Lrev)          # Lrev[top - 1 - m] = L[m]
-    dot, sqrt = np.dot, math.sqrt
-    f1 = float(F[k0 - 1])                    # the last two forces, as Python floats
-    f2 = float(F[k0 - 2]) if k0 >= 2 else 0.0
-    for k in range(k0, n + 1):
-        d = float(d_free[k - k0])
+    sqrt = math.sqrt
+    dl = d_free.tolist()
+    Lb = L[:_BLOCK + 1].tolist()
+    # the last three forces, as Python floats
+    f1, f2, f3 = (float(F[k0 - i]) if k0 >= i else 0.0 for i in (1, 2, 3))
+    k = k0
+    while k <= n:
+        b = min(_BLOCK, n + 1 - k)
         if k > 1:
-            d -= float(dot(Lrev[top - k:top - 1], F[1:k]))
-        if d <= 0.0:
-            return k
-        u = sqrt(d)
-        g = 2.0 * f1 - f2            # linear extrapolation, kept only if above the root
-        if k > 2 and g > 0.0:
-            ug = g ** (1.0 / 3.0) * (1.0 + 1e-9)
-            if ug < u and ug * ug * (1.0 + a * ug) >= d:
-                u = ug
-        for _ in range(60):
-            du = (u * u * (1.0 + a * u) - d) / (u * (2.0 + 3.0 * a * u))
-            u -= du
-            if du <= 4e-16 * u:
-                break
-        f2, f1 = f1, u * u * u
-        F[k] = f1
+            # H[i, q - 1] = L[i + q], q = k - j: the weight of node j = k - q at node k + i
+            H = np.ndarray((b, k - 1), dtype=float, buffer=L, offset=L.itemsize,
+                           strides=(L.itemsize, L.itemsize))
+            hist = (H @ F[k - 1:0:-1]).tolist()
+        else:
+            hist = [0.0] * b
+        fb: list[float] = []
+        for i in range(b):
+            kk = k + i
+            d = dl[kk - k0] - hist[i]
+            for j in range(i):
+                d -= Lb[i - j] * fb[j]
+            if d <= 0.0:
+                F[k:kk] = fb
+                return kk
+            u = sqrt(d)                  # above the root: Newton from there is monotone
+            g = 3.0 * (f1 - f2) + f3     # the quadratic extrapolation of the forces
+            if kk > 3 and g > 0.0 and g ** (1.0 / 3.0) < u:
+                u = g ** (1.0 / 3.0)     # if below the root, one step brings it above
+            for _ in range(60):
+                du = (u * u * (1.0 + a * u) - d) / (u * (2.0 + 3.0 * a * u))
+                u -= du
+                # Newton's next correction is about du^2 / (2 u): below 1e-16 u from here
+                if abs(du) <= 1e-8 * u:
+                    break
+            f3, f2, f1 = f2, f1, u * u * u
+            fb.append(f1)
+        F[k:k + b] = fb
+        k += b
     return None
 
 
@@ -146,17 +164,19 @@ def end_of_contact(kernel: Kernel, c_res: float, t_s: float, x_s: float, v_s: fl
     x1 = x_s + v_s * km * h - float(wb @ Fk[1:])
     v1 = v_s - h * float(np.sum(Fk[1:km])) - 0.5 * h * f1
     P = kernel.forced(Fk)
-    E1 = kernel.E[:, km]
+    E1 = kernel.column(km)
     cw = r.c / r.wd
     y1 = (B_s * E1).real + cw * P.imag
     u1 = (r.s * B_s * E1).real + cw * (r.s * P).imag
     B1 = r.amplitude(y1, u1)
 
-    def delta(w: float) -> float:
-        return x1 + v1 * w - f1 * w * w / 3.0 - float(np.sum(_modes_after(r, B1, f1, w)[0]))
-
-    w_end = h if delta(h) >= 0.0 else brentq(delta, 0.0, h, xtol=1e-15 * max(h, 1e-300),
-                                             rtol=8.9e-16)
+    d_h = _delta_end(r, B1, x1, v1, f1 * cw, f1, h)[0]
+    if d_h >= 0.0:
+        w_end = h
+    else:
+        d_0 = x1 - float(B1.real.sum())
+        w_end = _end_root(lambda w: _delta_end(r, B1, x1, v1, f1 * cw, f1, w), h,
+                          h * d_0 / (d_0 - d_h))
     y_e, u_e = _modes_after(r, B1, f1, w_end)
     v_e = v1 - 0.5 * f1 * w_end
     # the force's (t_e - t)^{3/2} end, which the linear pieces miss: F ~ (-delta'_e u)^{3/2}
@@ -165,6 +185,47 @@ def end_of_contact(kernel: Kernel, c_res: float, t_s: float, x_s: float, v_s: fl
     return ContactRun(t_s=t_s, h=h, F=np.array(Fk), a=w_end,
                       x_e=x1 + v1 * w_end - f1 * w_end**2 / 3.0, v_e=v_e - dI,
                       B_e=r.amplitude(y_e, u_e + r.c * dI), defect=dI)
+
+
+def _delta_end(r: Rates, B1: ComplexArray, x1: float, v1: float, cw1: FloatArray, f1: float,
+               w: float) -> tuple[float, float]:
+    """The approach delta and d(delta)/dw a time w after node k-1, the force falling linearly
+    from f1 to 0 over that same w (so the derivative is not the approach's rate: with
+    q(w) = w psi2(s w), q'(w) = e^{s w} - psi2(s w))."""
+    x = r.s * w
+    e = np.exp(x)
+    p = psi2(x)
+    d = x1 + v1 * w - f1 * w * w / 3.0 - float((B1 * e).real.sum() + w * (cw1 * p).imag.sum())
+    dd = v1 - 2.0 * f1 * w / 3.0 - float((r.s * B1 * e).real.sum() + (cw1 * (e - p)).imag.sum())
+    return d, dd
+
+
+def _end_root(f: Callable[[float], tuple[float, float]], h: float, w: float) -> float:
+    """The root of f in (0, h) given f(0) > 0 > f(h): Newton from w (the secant's point), kept
+    inside the bracket (bisection when a step would leave it)."""
+    lo, hi = 0.0, h
+    if not lo < w < hi:
+        w = 0.5 * h
+    for _ in range(100):
+        d, dd = f(w)
+        if d == 0.0:
+            return w
+        if d > 0.0:
+            lo = w
+        else:
+            hi = w
+        step = d / dd if dd != 0.0 else math.inf
+        w_new = w - step
+        if lo < w_new < hi:
+            # quadratic convergence: the next step would be about step^2 / h, below rounding
+            if abs(step) <= 1e-9 * h:
+                return w_new
+        else:
+            w_new = 0.5 * (lo + hi)
+        if hi - lo <= 1e-15 * h:
+            return w_new
+        w = w_new
+    return w
 
 
 def zeta_m32(q: float) -> float:

@@ -339,3 +339,29 @@ def test_a_kernel_the_machine_cannot_hold_is_refused():
                        shape="circle")
     with pytest.raises(RuntimeError, match="GiB"):
         solve(plate, h=1e-4)
+
+
+def test_a_tolerance_below_the_rounding_floor_is_refused_not_searched():
+    """rtol below RTOL_MIN = 1e-10 is refused up front (issue 37's five-contact plate meets the
+    estimate's rounding floor near 1e-11, where halving ran for minutes); and an estimate that
+    stops falling ends the search with a RuntimeError after a halving or two, not after
+    max_halvings ever finer runs."""
+    import zener_sym.plate.solver as solver
+
+    plate = clamped_circle(GLASS50["lam"], GLASS50["beta"], 20)
+    with pytest.raises(ValueError, match=r"rtol must be in \[1e-10, 0.01\]"):
+        solve(plate, rtol=1e-11)
+    calls = []
+
+    def stuck(rows, errs):   # an estimate at a floor: the same relative 1e-6 at every step
+        calls.append(1)
+        return 1e-6 * abs(rows[-1]["speed_after"])
+
+    mp = pytest.MonkeyPatch()
+    mp.setattr(solver, "_e_error", stuck)
+    try:
+        with pytest.raises(RuntimeError, match="stopped falling"):
+            solve(plate, rtol=1e-8, h=0.1)
+    finally:
+        mp.undo()
+    assert len(calls) == 3     # the first estimate, then two that did not fall

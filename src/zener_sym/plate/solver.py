@@ -33,7 +33,10 @@ from .stepping import ContactRun, end_of_contact, start_kick, step_contact
 
 __all__ = ["solve", "choose_modes", "check_plate", "RTOL_MIN", "RTOL_MAX"]
 
-RTOL_MIN = 1e-12
+#: The finest rtol: below it the error estimate meets its rounding floor on plates with several
+#: contacts (near 1e-11 relative on issue 37's five-contact plate, where halving then only adds
+#: work), so finer requests are refused up front rather than searched for.
+RTOL_MIN = 1e-10
 RTOL_MAX = 1e-2
 #: A contact is stepped with at least this many nodes (shorter ones are re-run on a finer grid).
 N_MIN = 16
@@ -48,6 +51,10 @@ N_MIN = 16
 SAFETY = 2.0
 #: The coarsest first step (a Hertz contact, 3.2 long, then has 16 nodes).
 H_MAX = 0.2
+#: A halving whose estimate is above STALL times the last one did not reduce it (it should fall
+#: by about 2^2.5 = 5.7); two in a row, or one that grew, end the search (rounding floor,
+#: :func:`solve`).
+STALL = 0.5
 #: Absolute floor of the error target on e, relative to rtol (e can be nearly 0).
 E_FLOOR = 1e-3
 
@@ -186,7 +193,8 @@ def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float 
     plate : ModalPlate
         The plate's modes seen from the impact point, in Zener's scales (:mod:`.modal`).
     rtol : float
-        Relative tolerance on e (with an absolute floor of 1e-3 rtol), in [1e-12, 1e-2].
+        Relative tolerance on e (with an absolute floor of 1e-3 rtol), in [RTOL_MIN, RTOL_MAX]
+        = [1e-10, 1e-2].
     loss : float
         Modal loss factor eta in [0, 1) (each mode: y'' + eta omega y' + omega^2 y = c F);
         0 (default) is the undamped plate.
@@ -217,6 +225,7 @@ def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float 
     levels = [_run(r, c_res, h0 / 2.0**i, max_contacts, max_steps, refine, kernels)
               for i in range(3)]
     hk = h0 / 4.0
+    last, stalls = math.inf, 0
     for _ in range(max_halvings + 1):
         rows = [_fields(r, lv) for lv in levels]
         if _comparable(levels):
@@ -226,6 +235,15 @@ def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float 
             err = _e_error(r2, errs)
             if err <= rtol * max(abs(e), E_FLOOR):
                 return _result(r2, errs, err, levels[2], hk, len(omega), loss, rtol)
+            # the estimate falls about 2^2.5 per halving; when it stops falling it has met the
+            # rounding floor, and each further halving would only double the work
+            stalls = stalls + 1 if err > STALL * last else 0
+            if stalls >= 2 or err > last:
+                raise RuntimeError(
+                    f"e's error estimate stopped falling at {err / max(abs(e), E_FLOOR):.2g} "
+                    f"(relative) by h = {hk:.3g}: rtol = {rtol:g} is below the accuracy rounding "
+                    "allows on this plate; ask for a looser rtol")
+            last = err
         hk /= 2.0
         levels = [levels[1], levels[2], _run(r, c_res, hk, max_contacts, max_steps, refine,
                                                     kernels)]

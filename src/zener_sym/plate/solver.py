@@ -301,10 +301,11 @@ def choose_modes(make: Callable[[int], ModalPlate], *, rtol: float = 1e-6, loss:
     if n < 1 or n_max < n:
         raise ValueError(f"need 1 <= n_start <= n_max, got {n_start!r}, {n_max!r}")
     plate = make(n)
-    res = solve(plate, rtol=rtol / 4.0, loss=loss)
+    inner = max(rtol / 4.0, RTOL_MIN)   # each solve a little finer, within solve's range
+    res = solve(plate, rtol=inner, loss=loss)
     while 2 * n <= n_max:
         plate2 = make(2 * n)
-        res2 = solve(plate2, rtol=rtol / 4.0, loss=loss)
+        res2 = solve(plate2, rtol=inner, loss=loss)
         if len(res2.contacts) == len(res.contacts) and \
                 abs(res2.e - res.e) <= 0.5 * rtol * max(abs(res2.e), E_FLOOR):
             return plate2, res2

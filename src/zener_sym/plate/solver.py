@@ -51,10 +51,12 @@ N_MIN = 16
 SAFETY = 2.0
 #: The coarsest first step (a Hertz contact, 3.2 long, then has 16 nodes).
 H_MAX = 0.2
-#: A halving whose estimate is above STALL times the last one did not reduce it (it should fall
-#: by about 2^2.5 = 5.7); two in a row, or one that grew, end the search (rounding floor,
-#: :func:`solve`).
+#: Below FLOOR_ZONE (relative) a halving whose estimate is above STALL times the last one did
+#: not reduce it (it should fall by about 2^2.5 = 5.7); two in a row, or one that grew, end the
+#: search (the rounding floor, near 1e-11 on issue 37's five contacts: :func:`solve`). Above it
+#: the estimate may rise between halvings (on the 100 mm plate at 9e-6) and the search goes on.
 STALL = 0.5
+FLOOR_ZONE = 1e-8
 #: Absolute floor of the error target on e, relative to rtol (e can be nearly 0).
 E_FLOOR = 1e-3
 
@@ -235,10 +237,12 @@ def solve(plate: ModalPlate, *, rtol: float = 1e-6, loss: float = 0.0, h: float 
             err = _e_error(r2, errs)
             if err <= rtol * max(abs(e), E_FLOOR):
                 return _result(r2, errs, err, levels[2], hk, len(omega), loss, rtol)
-            # the estimate falls about 2^2.5 per halving; when it stops falling it has met the
-            # rounding floor, and each further halving would only double the work
-            stalls = stalls + 1 if err > STALL * last else 0
-            if stalls >= 2 or err > last:
+            # near the rounding floor (below FLOOR_ZONE relative) an estimate that stops falling
+            # has met it, and each further halving would only double the work; above it the
+            # estimate need not fall monotonically (each contact's end moves between nodes)
+            near = err <= FLOOR_ZONE * max(abs(e), E_FLOOR)
+            stalls = stalls + 1 if near and err > STALL * last else 0
+            if stalls >= 2 or (near and err > last):
                 raise RuntimeError(
                     f"e's error estimate stopped falling at {err / max(abs(e), E_FLOOR):.2g} "
                     f"(relative) by h = {hk:.3g}: rtol = {rtol:g} is below the accuracy rounding "

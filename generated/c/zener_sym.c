@@ -5,7 +5,7 @@
  * stale.
  *
  * Sources: zener_sym.codegen.ham_exprs, zener_sym.codegen.c, generated/exact_table.py, generated/exact_force_table.py, generated/ham1_table.py
- * Inputs hash: 044dd10fb00bc775
+ * Inputs hash: fb18aabf6b682a1c
  * SymPy version: 1.14.0
  */
 #include <float.h>

@@ -101,8 +101,8 @@ def _pieces_init(p: str, n: int) -> str:
     return f"{{{n}, {p}_edges, {p}_ga, {p}_gb, {p}_kind}}"
 
 
-def summary_c(p: str, ns: Mapping[str, Any], keys: Sequence[str], fold_x: bool = False,
-              summary_name: str | None = None) -> tuple[str, str, int]:
+def summary_c(p: str, ns: Mapping[str, Any], keys: Sequence[str],
+              fold_x: bool = False) -> tuple[str, str, int]:
     """C text of a table's summary series as the one ``zs__sumtab`` shape every table has
     (evaluated by the runtime's ``zs__eval``): its arrays, the ``zs__sumtab`` initialiser that
     points to them, and its largest degree.
@@ -123,8 +123,6 @@ def summary_c(p: str, ns: Mapping[str, Any], keys: Sequence[str], fold_x: bool =
         The fields, in the order the C code reads them (``field_enum``).
     fold_x : bool
         Also write x = g xk - xo per piece (a summary's variable without a division).
-    summary_name : str, optional
-        The name the module assigns its series to (default ``SUMMARY``, every generated table's).
 
     Returns
     -------
@@ -133,7 +131,7 @@ def summary_c(p: str, ns: Mapping[str, Any], keys: Sequence[str], fold_x: bool =
     """
     if not 0 < len(keys) <= MAX_FIELDS:
         raise ValueError(f"table {p}: {len(keys)} fields; the C runtime sums 1 to {MAX_FIELDS}")
-    series = ns[summary_name or summary_name_of(ns)]
+    series = summary_of(ns)
     pieces = ns["TABLE_PIECES"]
     n_lam = len(pieces)
     text, ga, gb = pieces_c(p, pieces)
@@ -158,12 +156,12 @@ def summary_c(p: str, ns: Mapping[str, Any], keys: Sequence[str], fold_x: bool =
     return "".join(out), init, top
 
 
-def summary_name_of(ns: Mapping[str, Any]) -> str:
-    """``SUMMARY``, the name every generated table module assigns its summary series to; a
-    ValueError for a module without it."""
+def summary_of(ns: Mapping[str, Any]) -> Any:
+    """A table module's summary series (``SUMMARY``, every generated table's name for them); a
+    ValueError for a module without them."""
     if "SUMMARY" not in ns:
         raise ValueError("table module without summary series: it assigns no SUMMARY")
-    return "SUMMARY"
+    return ns["SUMMARY"]
 
 
 #: A name the C code spells from a table's own (a field, a time piece, a constant).
@@ -277,7 +275,7 @@ def describe(ns: Mapping[str, Any]) -> Description:
                    if k.isupper() and not k.startswith(("TABLE_", "_")) and k not in skip
                    and isinstance(v, (int, float)) and not isinstance(v, bool))
     hist = _history_of(ns, len(pieces)) if "HISTORY" in ns else {}
-    d = Description(pieces=pieces, fields=fields, summary=ns[summary_name_of(ns)],
+    d = Description(pieces=pieces, fields=fields, summary=summary_of(ns),
                     constants=consts, **hist)
     for name in (*d.fields, *d.time_pieces, *d.history_fields, *(k for k, _ in consts)):
         if not _C_NAME.match(name):

@@ -23,13 +23,12 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..typing import FloatArray
-from .kernels import ComplexArray, Rates, powers, re_dot
+from .kernels import ComplexArray, Rates, compiled
 
 __all__ = ["Flight", "end_bound", "next_contact"]
 
-#: samples evaluated at once, as _BLOCK-sample blocks
+#: samples evaluated at once
 _CHUNK = 2048
-_BLOCK = 64
 #: subdivision of a suspicious interval
 _SPLIT = 8
 
@@ -50,33 +49,23 @@ class Flight:
         return np.reshape(self.x_r + self.v * dt - w, np.shape(dt))
 
     def gap1(self, r: Rates, t: float) -> float:
-        """g(t) at one time (the root finder's function: no array bookkeeping)."""
-        dt = t - self.t_r
-        return self.x_r + self.v * dt - float((self.B * np.exp(r.s * dt)).real.sum())
+        """g(t) at one time (the root finder's function)."""
+        return float(compiled().gap_slope(r.s, self.B, self.x_r, self.v, t - self.t_r)[0])
 
     def gap_grid(self, r: Rates, t_a: float, ds: float, n: int) -> FloatArray:
-        """g at t_a + j ds, j = 0 .. n-1 (t_a >= t_r): the modes' phases by products, not exps
-        (a block of powers of e^{s ds} times each block's start, one matrix product)."""
-        m = min(n, _BLOCK)
-        nb = -(-n // m)
-        W = powers(np.exp(r.s * ds), m)
-        Q = powers(np.exp(r.s * (m * ds)), nb) * (self.B * np.exp(r.s * (t_a - self.t_r)))[:, None]
-        w = re_dot(Q.T, np.ascontiguousarray(W.real), np.ascontiguousarray(W.imag)).ravel()[:n]
-        dt = (t_a - self.t_r) + ds * np.arange(n)
-        out: FloatArray = self.x_r + self.v * dt - w
+        """g at t_a + j ds, j = 0 .. n-1 (t_a >= t_r), the modes' phases by products."""
+        out: FloatArray = compiled().gap_grid(r.s, self.B, self.x_r, self.v, t_a - self.t_r,
+                                              ds, n)
         return out
 
     def gap_slope(self, r: Rates, t: float) -> tuple[float, float]:
         """(g(t), g'(t)) from one set of exponentials."""
-        dt = t - self.t_r
-        Be = self.B * np.exp(r.s * dt)
-        return (self.x_r + self.v * dt - float(Be.real.sum()),
-                self.v - float((r.s * Be).real.sum()))
+        g, d = compiled().gap_slope(r.s, self.B, self.x_r, self.v, t - self.t_r)
+        return float(g), float(d)
 
     def slope(self, r: Rates, t: float) -> float:
         """g'(t)."""
-        e = np.exp(r.s * (t - self.t_r))
-        return float(self.v - ((r.s * self.B) @ e).real)
+        return self.gap_slope(r, t)[1]
 
     def advanced(self, r: Rates, t: float) -> tuple[float, ComplexArray]:
         """Ball position and modal amplitudes at time t (amplitudes referred to t)."""
@@ -85,7 +74,7 @@ class Flight:
 
 def end_bound(r: Rates, B: ComplexArray) -> float:
     """sqrt(2 E_p C_N): no deflection of the impact point can exceed it while the plate is free."""
-    return math.sqrt(max(2.0 * r.energy(B) * float(np.sum(r.c / r.omega**2)), 0.0))
+    return math.sqrt(max(2.0 * r.energy(B) * r.compliance, 0.0))
 
 
 def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
@@ -109,8 +98,8 @@ def next_contact(r: Rates, fl: Flight, scale: float) -> float | None:
     amp = np.abs(fl.B)
     G2 = float(np.sum(r.omega**2 * amp)) + 1e-300
     A = float(np.sum(amp)) + abs(fl.x_r) * 1e-12 + 1e-300
-    g_r = fl.gap1(r, fl.t_r)
-    d_r = fl.slope(r, fl.t_r)
+    g_r = fl.x_r - float(fl.B.real.sum())                  # at t_r itself: no exponential
+    d_r = fl.v - float((r.s * fl.B).real.sum())
     if g_r >= 0.0 and d_r > 0.0:
         return fl.t_r
     # g <= g_r + d_r u + G2 u^2 / 2 < 0 for 0 < u <= |d_r| / G2 when d_r < 0

@@ -9,15 +9,15 @@ whatever omega h is: stiff high modes never limit the step. The ball (x'' = -F) 
 omega -> 0 of the same integrals.
 
 The integrals use
-    phi2(x) = (e^x - 1 - x) / x^2     (a half hat ending at the node),
-    psi2(x) = (1 + (x - 1) e^x) / x^2 (a half hat starting at the node, seen a width later),
-    (e^x - 1)^2 / x^2                 (a whole hat, one step and more earlier),
-written without cancellation for small |x| and without overflow for damped stiff modes.
+    phi2(x) = (e^x - 1 - x) / x^2     (a half hat rising to the node),
+    psi2(x) = (1 + (x - 1) e^x) / x^2 (a half hat falling from the node, seen a width later),
+written without cancellation for small |x| (their series there).
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from types import ModuleType
 
 import numpy as np
 import numpy.typing as npt
@@ -25,12 +25,10 @@ import numpy.typing as npt
 from ..numerics.taylor import horner
 from ..typing import FloatArray
 
-__all__ = ["Rates", "phi2", "psi2", "Kernel", "powers", "re_dot"]
+__all__ = ["Rates", "phi2", "psi2", "Kernel", "compiled"]
 
 ComplexArray = npt.NDArray[np.complex128]
 
-#: Largest kernel table (modes x steps complex numbers) built, in GiB.
-MAX_GIB = 2.0
 #: Below this |x| the series are used (12 terms: the next one is below 1e-17 there).
 _SERIES = 0.25
 _TERMS = 12
@@ -60,30 +58,6 @@ def psi2(x: ComplexArray) -> ComplexArray:
     return _series_where_small(x, (1.0 + (xs - 1.0) * np.exp(xs)) / xs**2, _PSI2)
 
 
-def powers(z: ComplexArray, n: int, out: ComplexArray | None = None) -> ComplexArray:
-    """The matrix z_i^j, j = 0 .. n-1, by doubling products (a complex exp costs some 20 times a
-    product). The rounding of z^j grows as j ulp, as that of e^{s j h} from its rounded argument
-    does."""
-    if out is None:
-        out = np.empty((len(z), n), dtype=complex)
-    out[:, 0] = 1.0
-    m, zm = 1, z
-    while m < n:
-        k = min(m, n - m)
-        np.multiply(out[:, :k], zm[:, None], out=out[:, m:m + k])
-        m += k
-        zm = zm * zm
-    return out
-
-
-def re_dot(a: ComplexArray, Er: FloatArray, Ei: FloatArray) -> FloatArray:
-    """Re(a @ (Er + i Ei)) by two real products: numpy's complex products either skip BLAS
-    (einsum, slow) or take a threaded zgemm/zgemv that, on a loaded machine, can cost a hundred
-    times more than the real dgemm/dgemv pair (measured)."""
-    out: FloatArray = a.real @ Er - a.imag @ Ei
-    return out
-
-
 @dataclass(frozen=True)
 class Rates:
     """The modes' complex rates s_n and damped frequencies omega_d for a loss factor eta."""
@@ -93,12 +67,15 @@ class Rates:
     loss: float
     s: ComplexArray = field(init=False)
     wd: FloatArray = field(init=False)
+    #: C_N = sum c_n / omega_n^2, the modes' own static compliance
+    compliance: float = field(init=False)
 
     def __post_init__(self) -> None:
         zeta = 0.5 * self.loss
         wd = self.omega * np.sqrt(1.0 - zeta * zeta)
         object.__setattr__(self, "wd", wd)
         object.__setattr__(self, "s", -zeta * self.omega + 1j * wd)
+        object.__setattr__(self, "compliance", float(np.sum(self.c / self.omega**2)))
 
     def amplitude(self, y: FloatArray, v: FloatArray) -> ComplexArray:
         """B with y = Re(B), y' = Re(s B): the free motion from displacement y and velocity v."""
@@ -106,92 +83,38 @@ class Rates:
 
     def energy(self, B: ComplexArray) -> float:
         """E_p = sum (y'^2 + omega^2 y^2) / (2 c_n) of the modes in state B (at its time)."""
-        y, v = B.real, (self.s * B).real
-        return float(np.sum((v * v + self.omega**2 * y * y) / (2.0 * self.c)))
+        return float(compiled().energy(self.s, self.omega, self.c, B))
+
+
+_LOOPS: list[ModuleType] = []
+
+
+def compiled() -> ModuleType:
+    """The compiled loops (:mod:`.loops`), imported on first use: importing numba costs some
+    0.3 s that a command not solving a plate should not pay."""
+    if not _LOOPS:
+        from . import loops
+        _LOOPS.append(loops)
+    return _LOOPS[0]
 
 
 class Kernel:
-    """The hat responses on a uniform grid of step h, grown on demand.
+    """One step h: every mode's exact step under a force linear between two nodes.
 
-    ``L[m]`` is the approach delta lost at node k to a unit hat at node k - m (ball and modes
-    together, static correction excluded). The powers e^{s j h} are never tabulated whole (a
-    modes x steps table costs more to fill and copy than to use): j = b M + i with
-    ``W[:, i] = e^{s i h}`` (i < M) and ``Q[:, b] = e^{s b M h}``, so a sum over the modes of
-    every power is a few real matrix products (:meth:`series`, :meth:`poly`).
+    With y = Re B and y' = Re(s B) (:meth:`Rates.amplitude`), a mode's amplitude over one step
+    from node k to k + 1 is B_{k+1} = E B_k + P F_k + Q F_{k+1}: E = e^{s h} is its free motion,
+    and P = -i (c / omega_d) h psi2(s h), Q = -i (c / omega_d) h phi2(s h) are its responses to
+    the half hats falling from node k and rising to node k + 1 (the closed-form integrals of its
+    impulse response). The stiffest mode is stepped as exactly as the softest, whatever
+    omega h is.
     """
 
-    #: M, the powers in one block
-    M = 32
-
-    def __init__(self, rates: Rates, h: float, n_steps: int) -> None:
+    def __init__(self, rates: Rates, h: float) -> None:
         self.rates, self.h = rates, h
-        sh = rates.s * h
-        self.step = np.exp(sh)
-        self.whole = np.expm1(sh) ** 2 / (rates.s**2 * h)   # hat one step and more earlier
-        self.half = h * phi2(sh)                             # half hat ending at the node
-        W = powers(self.step, self.M + 1)
-        self._zm = W[:, self.M].copy()                       # e^{s M h}
-        self.Wr, self.Wi = np.ascontiguousarray(W[:, :self.M].real), \
-            np.ascontiguousarray(W[:, :self.M].imag)
-        self.Q = np.empty((len(rates.s), 0), dtype=complex)
-        self.L = np.empty(0)
-        self.grow(n_steps)
+        self.E, self.P, self.Q = compiled().coefficients(rates.s, rates.c / rates.wd, h)
 
-    def grow(self, n_steps: int) -> None:
-        """Make L cover nodes 0 .. n_steps (at least doubling, so growth is amortised)."""
-        have = len(self.L)
-        if have > n_steps:
-            return
-        n_new = max(n_steps + 1, 2 * have)
-        nb = -(-n_new // self.M)
-        r, h = self.rates, self.h
-        gib = 16.0 * 4 * len(r.s) * (nb + self.M) / 2**30
-        if gib > MAX_GIB:
-            raise RuntimeError(f"{len(r.s)} modes over {n_new} steps need {gib:.1f} GiB for the "
-                               f"kernel (limit {MAX_GIB:g} GiB): use fewer modes or a looser rtol")
-        self.Q = powers(self._zm, nb)
-        n = nb * self.M
-        cw = r.c / r.wd
-        L = np.empty(n)
-        L[0] = h * h / 6.0 + float(np.sum(cw * self.half.imag))
-        L[1:] = np.arange(1, n) * h * h + self.series(cw * self.whole, n - 1).imag
-        self.L = L
-
-    def series(self, a: ComplexArray, n: int) -> ComplexArray:
-        """sum_n a_n e^{s_n j h} for j = 0 .. n-1 (n <= len(L))."""
-        nb = -(-n // self.M)
-        A = a[:, None] * self.Q[:, :nb]
-        Ar, Ai = np.ascontiguousarray(A.real.T), np.ascontiguousarray(A.imag.T)
-        re = Ar @ self.Wr - Ai @ self.Wi
-        im = Ar @ self.Wi + Ai @ self.Wr
-        out: ComplexArray = (re + 1j * im).ravel()[:n]
+    def state(self, B: ComplexArray, F: FloatArray) -> ComplexArray:
+        """The modes' amplitudes at the last node of F, from B at its first node."""
+        out: ComplexArray = compiled().replay(self.E, self.P, self.Q, np.array(B, dtype=complex),
+                                              np.ascontiguousarray(F, dtype=float))
         return out
-
-    def poly(self, c: FloatArray) -> ComplexArray:
-        """sum_i c_i e^{s i h} over i < len(c) (len(c) <= len(L)), for each mode."""
-        nb = -(-len(c) // self.M)
-        C = np.zeros(nb * self.M)
-        C[:len(c)] = c
-        C = C.reshape(nb, self.M).T
-        Vr, Vi = self.Wr @ C, self.Wi @ C
-        Q = self.Q[:, :nb]
-        out: ComplexArray = (Q.real * Vr - Q.imag * Vi).sum(axis=1) \
-            + 1j * (Q.real * Vi + Q.imag * Vr).sum(axis=1)
-        return out
-
-    def column(self, j: int) -> ComplexArray:
-        """e^{s j h} for every mode."""
-        b, i = divmod(j, self.M)
-        out: ComplexArray = self.Q[:, b] * (self.Wr[:, i] + 1j * self.Wi[:, i])
-        return out
-
-    def forced(self, F: FloatArray) -> ComplexArray:
-        """P_n = sum_j F_j G_n(k - j) for nodes j = 1 .. k of F (F[0] at the contact's start is 0),
-        the complex response at node k = len(F) - 1; y = Im(c P) / omega_d, y' = Im(c s P) /
-        omega_d."""
-        k = len(F) - 1
-        P: ComplexArray = self.half * F[k]
-        if k >= 2:
-            # sum_{j=1}^{k-1} F_j e^{s (k-1-j) h}
-            P = P + self.whole * self.poly(F[k - 1:0:-1])
-        return P

@@ -122,16 +122,16 @@ def _contact(r: Rates, c_res: float, h: float, kernels: dict[float, Kernel], t_s
     h = h / 2.0**q
     for _ in range(40):
         if h not in kernels:
-            # a Hertz contact lasts 3.2 (slower approaches a little longer): one growth at most
-            kernels[h] = Kernel(r, h, int(5.0 / h) + 16)
+            kernels[h] = Kernel(r, h)
         v_k, B_k, dI = start_kick(r, h, v_s, B_s)
-        F, k = step_contact(kernels[h], c_res, x_s, v_k, B_k, max_steps)
+        nodes = step_contact(kernels[h], c_res, x_s, v_k, B_k, max_steps)
+        k = len(nodes.F) - 1
         if k >= N_MIN:
             break
         h = h / 2.0 ** math.ceil(math.log2(N_MIN / max(k - 1, 0.5)))
     else:
         raise RuntimeError(f"a contact at tau = {t_s:.6g} does not resolve (a graze?)")
-    run = end_of_contact(kernels[h], c_res, t_s, x_s, v_k, B_k, F)
+    run = end_of_contact(kernels[h], t_s, nodes)
     run.defect += dI
     return run
 

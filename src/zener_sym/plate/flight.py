@@ -11,7 +11,7 @@ known in closed form. Two bounds make the search a proof rather than a sampling:
 * the next contact: |g''| = |w''| <= G2 = sum omega_n^2 |B_n| (|s_n| = omega_n), so on an interval
   of width l between samples g_a, g_b, g <= max(g_a, g_b) + G2 l^2 / 8. Intervals where that is
   not negative are subdivided until g is monotone there (g' > 0 throughout: a single crossing, then
-  found by brentq) or the interval is below 1e-13 of the time scale (a graze of depth below
+  found by Newton kept in the bracket) or the interval is below 1e-13 of the time scale (a graze of depth below
   G2 l^2/8, negligible: ignored).
 """
 from __future__ import annotations
@@ -20,7 +20,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..typing import FloatArray
 from .kernels import ComplexArray, Rates, compiled
@@ -41,12 +40,6 @@ class Flight:
     x_r: float
     v: float
     B: ComplexArray
-
-    def gap(self, r: Rates, t: FloatArray) -> FloatArray:
-        """g(t) = x(t) - w(t) at times t >= t_r (vectorised)."""
-        dt = np.asarray(t, dtype=float) - self.t_r
-        w = np.einsum("n,nm->m", self.B, np.exp(np.outer(r.s, np.atleast_1d(dt)))).real
-        return np.reshape(self.x_r + self.v * dt - w, np.shape(dt))
 
     def gap1(self, r: Rates, t: float) -> float:
         """g(t) at one time (the root finder's function)."""
@@ -135,31 +128,23 @@ def _safe_steps(r: Rates, fl: Flight, G2: float, a: float, b: float, ga: float, 
     """The first crossing of g = 0 in [a, b] (g(a) < 0), or None, by safe steps: from t, with
     g'' <= G2, g(t + u) <= g + g' u + G2 u^2 / 2, which stays negative up to its root u*; so
     t + u* never passes the first crossing, and near a crossing with g' > 0 the steps converge
-    to it quadratically. A crossing once bracketed is found by brentq; where the steps stall
-    (a graze), the interval is subdivided (:func:`_refine`)."""
+    to it quadratically. A crossing once bracketed is found by Newton kept in the bracket; where
+    the steps stall (a graze), the interval is subdivided (:func:`_refine`). The steps are
+    compiled (:func:`.loops.safe_steps`)."""
     if ga >= 0.0:
         return a
-    t, g = a, ga
-    for _ in range(_SAFE_STEPS):
-        _, d = fl.gap_slope(r, t)
-        root = math.sqrt(d * d - 2.0 * G2 * g)
-        u = -2.0 * g / (d + root) if d > 0.0 else (root - d) / G2
-        t_new = t + u
-        if t_new >= b:
-            return None if gb < 0.0 else _bracketed(r, fl, t, b)
-        g_new = fl.gap1(r, t_new)
-        if g_new >= 0.0:
-            return _bracketed(r, fl, t, t_new)
-        if u < tiny:
-            break
-        t, g = t_new, g_new
-    return _refine(r, fl, G2, t, b, g, gb, tiny)
+    code, t, t2, g = compiled().safe_steps(r.s, fl.B, fl.x_r, fl.v, fl.t_r, G2, a, b, ga, gb,
+                                           tiny, _SAFE_STEPS)
+    if code == 0:
+        return None
+    if code == 1:
+        return _bracketed(r, fl, float(t), float(t2))
+    return _refine(r, fl, G2, float(t), b, float(g), gb, tiny)
 
 
 def _bracketed(r: Rates, fl: Flight, a: float, b: float) -> float:
-    """The crossing in [a, b], g(a) < 0 <= g(b)."""
-    return float(brentq(lambda t: fl.gap1(r, t), a, b, xtol=1e-15 * max(abs(b), 1.0),
-                        rtol=8.9e-16))
+    """The crossing in [a, b], g(a) < 0 <= g(b) (:func:`.loops.crossing`)."""
+    return float(compiled().crossing(r.s, fl.B, fl.x_r, fl.v, fl.t_r, a, b))
 
 
 def _refine(r: Rates, fl: Flight, G2: float, a: float, b: float, ga: float, gb: float,
@@ -174,7 +159,7 @@ def _refine(r: Rates, fl: Flight, G2: float, a: float, b: float, ga: float, gb: 
     if b - a < tiny:
         return None
     t = np.linspace(a, b, _SPLIT + 1)
-    g = fl.gap(r, t)
+    g = fl.gap_grid(r, a, (b - a) / _SPLIT, _SPLIT + 1)
     g[0], g[-1] = ga, gb
     for i in range(_SPLIT):
         hit = _refine(r, fl, G2, t[i], t[i + 1], g[i], g[i + 1], tiny)

@@ -251,16 +251,26 @@ def energy(s, omega, c, B):
 
 @njit(cache=True, fastmath=SUMS)
 def gap_grid(s, B, x_r, v, dt0, ds, n):
-    """g = x_r + v dt - sum_n Re(B_n e^{s_n dt}) at dt = dt0 + j ds, j = 0 .. n-1."""
+    """g = x_r + v dt - sum_n Re(B_n e^{s_n dt}) at dt = dt0 + j ds, j = 0 .. n-1 (the phases
+    advanced by products, the modes in the inner loop so that it vectorises)."""
+    m = len(s)
+    zr = np.empty(m)
+    zi = np.empty(m)
+    sr = np.empty(m)
+    si = np.empty(m)
+    for i in range(m):
+        z = B[i] * cmath.exp(s[i] * dt0)
+        st = cmath.exp(s[i] * ds)
+        zr[i], zi[i], sr[i], si[i] = z.real, z.imag, st.real, st.imag
     out = np.empty(n)
     for j in range(n):
-        out[j] = x_r + v * (dt0 + ds * j)
-    for i in range(len(s)):
-        st = cmath.exp(s[i] * ds)
-        z = B[i] * cmath.exp(s[i] * dt0)
-        for j in range(n):
-            out[j] -= z.real
-            z *= st
+        acc = 0.0
+        for i in range(m):
+            acc += zr[i]
+            a, b = zr[i], zi[i]
+            zr[i] = a * sr[i] - b * si[i]
+            zi[i] = a * si[i] + b * sr[i]
+        out[j] = x_r + v * (dt0 + ds * j) - acc
     return out
 
 
@@ -274,3 +284,56 @@ def gap_slope(s, B, x_r, v, dt):
         g -= be.real
         d -= (s[i] * be).real
     return g, d
+
+
+@njit(cache=True, fastmath=SUMS)
+def safe_steps(s, B, x_r, v, t_r, G2, a, b, ga, gb, tiny, max_steps):
+    """Safe steps towards the first crossing of g = 0 in [a, b] from g(a) = ga < 0
+    (:func:`zener_sym.plate.flight._safe_steps`). Returns (code, t, t2, g): code 0, no crossing
+    in [a, b]; 1, a crossing bracketed in [t, t2]; 2, the steps stalled at t (g there): the
+    caller subdivides [t, b]."""
+    t, g = a, ga
+    for _ in range(max_steps):
+        d = gap_slope(s, B, x_r, v, t - t_r)[1]
+        root = math.sqrt(d * d - 2.0 * G2 * g)
+        u = -2.0 * g / (d + root) if d > 0.0 else (root - d) / G2
+        t_new = t + u
+        if t_new >= b:
+            if gb < 0.0:
+                return 0, t, b, g
+            return 1, t, b, g
+        g_new = gap_slope(s, B, x_r, v, t_new - t_r)[0]
+        if g_new >= 0.0:
+            return 1, t, t_new, g
+        if u < tiny:
+            break
+        t, g = t_new, g_new
+    return 2, t, b, g
+
+
+@njit(cache=True, fastmath=SUMS)
+def crossing(s, B, x_r, v, t_r, a, b):
+    """The crossing of g = 0 in [a, b], g(a) < 0 <= g(b): Newton with g' kept inside the bracket
+    (bisection when a step would leave it), until the bracket or the step is below
+    1e-15 max(|b|, 1) + 8.9e-16 |t| (brentq's tolerances as the search used them)."""
+    lo, hi = a, b
+    xtol = 1e-15 * max(abs(b), 1.0)
+    t = 0.5 * (lo + hi)
+    for _ in range(200):
+        g, d = gap_slope(s, B, x_r, v, t - t_r)
+        if g == 0.0:
+            return t
+        if g < 0.0:
+            lo = t
+        else:
+            hi = t
+        tol = xtol + 8.9e-16 * abs(t)
+        if hi - lo <= 2.0 * tol:
+            return 0.5 * (lo + hi)
+        t_new = t - g / d if d != 0.0 else lo - 1.0
+        if not lo < t_new < hi:
+            t_new = 0.5 * (lo + hi)
+        elif abs(t_new - t) <= tol:
+            return t_new
+        t = t_new
+    return t

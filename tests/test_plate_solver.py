@@ -12,6 +12,7 @@ from __future__ import annotations
 import functools
 import math
 
+import mpmath
 import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
@@ -392,3 +393,31 @@ def test_an_estimate_that_rises_far_from_the_floor_does_not_stop_the_search():
     finally:
         mp.undo()
     assert r.error == pytest.approx(1e-7 * abs(r.e), rel=1e-12)
+
+
+@pytest.mark.parametrize("loss", [0.0, 0.3])
+def test_one_step_of_a_mode_is_the_integral_of_its_impulse_response(loss):
+    """The compiled step's coefficients (B <- E B + P F_k + Q F_{k+1}) against mpmath's
+    quadrature (30 digits) of the impulse response against the two half hats, on both sides of the series' switch at
+    |s h| = 0.25 and for stiff modes (|s h| up to 50)."""
+    from zener_sym.plate.kernels import Kernel, Rates
+
+    omega = np.array([1e-4, 0.3, 2.4, 7.0, 60.0, 500.0])
+    c = np.array([0.5, 1.0, 2.0, 0.1, 3.0, 0.7])
+    r, h = Rates(omega, c, loss), 0.1
+    K = Kernel(r, h)
+    for n in range(len(omega)):
+        s, cw = complex(r.s[n]), c[n] / r.wd[n]
+
+        def integral(weight):
+            with mpmath.workdps(30):
+                sm = mpmath.mpc(s.real, s.imag)
+                return complex(mpmath.quad(lambda v: mpmath.exp(sm * v) * weight(v),
+                                           [0, h / 2, h]))
+
+        # the force falling from node k (weight (h - u)/h at time u) is seen at u' = h - u later
+        P = -1j * cw * integral(lambda v: v / h)
+        Q = -1j * cw * integral(lambda v: (h - v) / h)
+        assert abs(K.E[n] - np.exp(s * h)) <= 1e-15
+        assert abs(K.P[n] - P) <= 1e-12 * abs(P)
+        assert abs(K.Q[n] - Q) <= 1e-12 * abs(Q)

@@ -199,9 +199,11 @@ def judge(lam: float, beta: float, supports: tuple[str, ...], quantity: str = "a
                f"(lambda <= {table['lam'][-1]:g}, beta <= {table['beta'][-1]:g}){eq}: no claim "
                "that Zener's infinite plate holds")
     else:
-        # a percentage reads at a glance; "error at 62" did not say 62 of what
-        why = (f"the finite-plate criterion{eq} estimates that Zener's infinite plate is off by "
-               f"{_percent(err)} (relative) for the {what} plate (lambda = {lam:.4g}, "
+        # a percentage reads at a glance ("error at 62" did not say 62 of what); "up to", as
+        # the estimate is a bound (a rectangle's, through its equivalent circle, can exceed the
+        # true difference many times: 2100 % where e_plate / e_Zener = 1.22)
+        why = (f"the finite-plate criterion{eq} estimates that Zener's infinite plate may be off by "
+               f"up to {_percent(err)} (relative) for the {what} plate (lambda = {lam:.4g}, "
                f"beta = {beta:.3g}); {SAFETY:g} x that is {'<=' if holds else '>'} rtol "
                f"{rtol:g}")
     return Verdict(holds, err, tuple(supports), why)

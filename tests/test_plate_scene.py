@@ -325,3 +325,20 @@ def test_a_large_square_is_solved_not_refused():
     assert r.e == pytest.approx(z.e, rel=1e-3)
     assert r.contacts[0].max_force_N == pytest.approx(z.contacts[0].max_force_N, rel=1e-3)
     assert r.contacts[0].end_s == pytest.approx(z.contacts[0].end_s, rel=1e-3)
+
+
+@pytest.mark.slow
+def test_a_plate_beyond_the_mode_limit_says_what_the_scene_can_change():
+    """An 800 mm glass square struck off its centre needs more than N_MAX modes for the solver
+    accuracy rtol = 1e-3 asks (1e-4): the error names the scene's rtol, why the finite plate was
+    chosen and the two ways out; rtol = 1e-2 is then solved."""
+    sc = zs.Scene("steel", "glass", radius="2.5 mm", thickness="1 mm", v0="1 m/s",
+                  plate_size=("800 mm", "800 mm"), impact_at=("240 mm", "320 mm"),
+                  support="simply-supported")
+    with pytest.raises(ValueError, match=r"Scene.result\(rtol=0.001\).*n_max = 65536.*"
+                                         r"chosen because the finite-plate criterion.*"
+                                         r"larger rtol.*'exact'"):
+        sc.result()
+    r = sc.result(rtol=1e-2)
+    z = sc.result(model="exact", warn=False)
+    assert r.model == "finite-plate" and r.e == pytest.approx(z.e, rel=1e-2)

@@ -592,12 +592,22 @@ class Scene:
         else:
             reason = f"model {model!r} requested"
         if model == "finite-plate":
-            # the solver a decade finer than the accuracy asked of the answer (no finer: the
-            # modes needed grow as rtol^(-2/3), and a 600 mm glass square at rtol 1e-5 needed
-            # more than the solver's N_MAX)
+            # the solver a decade finer than the accuracy asked of the answer (no finer: large
+            # plates need many modes, and a 600 mm glass square at rtol 1e-5 needed more than
+            # the solver's N_MAX)
             options = {**self.plate_options(),
                        "rtol": min(max(0.1 * rtol, RTOL_MIN), PLATE_RTOL_MAX), **options}
-        s = _summary(self.lam, model=model, **options)
+        try:
+            s = _summary(self.lam, model=model, **options)
+        except ValueError as exc:
+            if model != "finite-plate" or "cannot solve" not in str(exc):
+                raise
+            # the model's message speaks of its own rtol; say what the scene's user can change
+            why = (f"; chosen because {reason}" if reason.startswith("the finite-plate")
+                   else "")
+            raise ValueError(f"Scene.result(rtol={rtol:g}): {exc}{why}. Ask for a larger rtol "
+                             "(the solver is asked for a tenth of it), or for the model "
+                             "'exact' to take Zener's infinite plate as it is") from None
         T, L = self.T, self.length_scale
         # A model that cannot give a quantity leaves it None (shown as n/a); asking the
         # dimensionless summary for it raises FieldUnavailableError naming field and model.

@@ -80,4 +80,7 @@ def run(quick: bool = False) -> list[dict[str, Any]]:
     from .lammps import method as lammps_method  # LAMMPS beside the tables, when installed
 
     rows += lammps_method.targets(quick=quick)
+    from . import plate  # the finite-plate solver against DOP853 (issue 37)
+
+    rows += plate.targets(quick=quick)
     return rows

@@ -10,9 +10,9 @@ known in closed form. Two bounds make the search a proof rather than a sampling:
   (v < 0) is below -sqrt(2 E_p C_N) no contact can follow;
 * the next contact: |g''| = |w''| <= G2 = sum omega_n^2 |B_n| (|s_n| = omega_n), so on an interval
   of width l between samples g_a, g_b, g <= max(g_a, g_b) + G2 l^2 / 8. Intervals where that is
-  not negative are subdivided until g is monotone there (g' > 0 throughout: a single crossing, then
-  found by Newton kept in the bracket) or the interval is below 1e-13 of the time scale (a graze of depth below
-  G2 l^2/8, negligible: ignored).
+  not negative are subdivided until g is monotone there (g' > 0 throughout: a single crossing,
+  then found by Newton kept in the bracket) or the interval is below 1e-13 of the time scale (a
+  graze of depth below G2 l^2/8, negligible: ignored).
 """
 from __future__ import annotations
 

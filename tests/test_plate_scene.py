@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import pytest
 
@@ -296,6 +297,8 @@ def test_report_has_a_finite_plate_section(tmp_path):
     md = dict(build.SECTIONS)["finite plates"](tmp_path)
     assert md.startswith("## Finite plates") and md.count("model `finite-plate`") == 3
     assert "| 5 |" in md   # the 50 mm glass plate's fifth contact
+    # the compilation (or loading) of the solver's loops is timed apart from the cases'
+    assert re.search(r"compiled loops took [0-9.]+ (ms|s)", md)
 
 
 @pytest.mark.slow

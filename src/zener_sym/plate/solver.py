@@ -31,7 +31,7 @@ from .modal import ModalPlate
 from .result import CONTACT_FIELDS, PlateContact, PlateImpact
 from .stepping import ContactRun, end_of_contact, start_kick, step_contact
 
-__all__ = ["solve", "choose_modes", "check_plate", "RTOL_MIN", "RTOL_MAX", "N_MAX"]
+__all__ = ["solve", "choose_modes", "check_plate", "warm_up", "RTOL_MIN", "RTOL_MAX", "N_MAX"]
 
 #: The finest rtol: below it the error estimate meets its rounding floor on plates with several
 #: contacts (near 1e-11 relative on issue 37's five-contact plate, where halving then only adds
@@ -319,3 +319,16 @@ def choose_modes(make: Callable[[int], ModalPlate], *, rtol: float = 1e-6, loss:
             return plate2, res2
         n, plate, res = 2 * n, plate2, res2
     raise RuntimeError(f"e did not converge in the mode count up to n_max = {n_max}")
+
+
+def warm_up() -> float:
+    """Seconds to load the compiled loops (:mod:`.loops`), or to compile them on an
+    installation's first solve: one solve of issue 37's five contacts with 12 modes, which calls
+    every loop the solver uses. A caller that times solves calls this first."""
+    import time
+
+    from .modes import modal_plate
+
+    t0 = time.perf_counter()
+    solve(modal_plate(2.27, 4.5e-3, shape="circle", support="clamped", n_modes=12), rtol=1e-3)
+    return time.perf_counter() - t0

@@ -225,9 +225,17 @@ def _contact_rows(res: Any) -> list[list[str]]:
 
 def section(out_dir: Path) -> str:
     """The report's finite-plate section: the issue's scenes as the scene answers them."""
+    # the solver's loops compile on the first solve of an installation (numba, then cached):
+    # timed apart, so that the first case's time is its own
+    from ..plate.solver import warm_up
+
+    compile_s = warm_up()
     parts = ["## Finite plates\n\nThe scene chooses: with the plate's size and support, "
              "`Scene.result()` solves the bounded plate (`finite-plate`) where the criterion "
-             "finds Zener's infinite plate off by more than rtol (docs/finite_plates.md).\n"]
+             "finds that Zener's infinite plate may be off by more than rtol "
+             "(docs/finite_plates.md). Loading the solver's compiled loops took "
+             f"{seconds(compile_s)} (on an installation's first solve this is their compilation, "
+             "some seconds; they are cached after), apart from the times below.\n"]
     for i, (name, *_rest) in enumerate(CASES):
         sc = case_scene(i)
         t0 = time.perf_counter()

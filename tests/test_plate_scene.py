@@ -298,7 +298,7 @@ def test_report_has_a_finite_plate_section(tmp_path):
     assert md.startswith("## Finite plates") and md.count("model `finite-plate`") == 3
     assert "| 5 |" in md   # the 50 mm glass plate's fifth contact
     # the compilation (or loading) of the solver's loops is timed apart from the cases'
-    assert re.search(r"compiled loops took [0-9.]+ (ms|s)", md)
+    assert re.search(r"compiled loops took (< )?[0-9.]+ s", md)
 
 
 @pytest.mark.slow

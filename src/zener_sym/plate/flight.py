@@ -41,10 +41,6 @@ class Flight:
     v: float
     B: ComplexArray
 
-    def gap1(self, r: Rates, t: float) -> float:
-        """g(t) at one time (the root finder's function)."""
-        return float(compiled().gap_slope(r.s, self.B, self.x_r, self.v, t - self.t_r)[0])
-
     def gap_grid(self, r: Rates, t_a: float, ds: float, n: int) -> FloatArray:
         """g at t_a + j ds, j = 0 .. n-1 (t_a >= t_r), the modes' phases by products."""
         out: FloatArray = compiled().gap_grid(r.s, self.B, self.x_r, self.v, t_a - self.t_r,

@@ -11,52 +11,22 @@ omega -> 0 of the same integrals.
 The integrals use
     phi2(x) = (e^x - 1 - x) / x^2     (a half hat rising to the node),
     psi2(x) = (1 + (x - 1) e^x) / x^2 (a half hat falling from the node, seen a width later),
-written without cancellation for small |x| (their series there).
+summed as series for small |x|, where the closed forms cancel (:mod:`.loops`, which computes
+them with the rest of each step).
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from types import ModuleType
 
 import numpy as np
 import numpy.typing as npt
 
-from ..numerics.taylor import horner
 from ..typing import FloatArray
 
-__all__ = ["Rates", "phi2", "psi2", "Kernel", "compiled"]
+__all__ = ["Rates", "Kernel", "compiled"]
 
 ComplexArray = npt.NDArray[np.complex128]
-
-#: Below this |x| the series are used (12 terms: the next one is below 1e-17 there).
-_SERIES = 0.25
-_TERMS = 12
-_PHI2 = [1.0 / math.factorial(n) for n in range(2, 2 + _TERMS)]
-_PSI2 = [(n - 1) / math.factorial(n) for n in range(2, 2 + _TERMS)]
-
-
-def _series_where_small(x: ComplexArray, out: ComplexArray, coef: list[float]) -> ComplexArray:
-    """out with the entries where |x| < _SERIES replaced by the series sum coef_k x^k."""
-    small = np.abs(x) < _SERIES
-    if small.any():
-        out[small] = horner(coef, x[small])
-    return out
-
-
-def phi2(x: ComplexArray) -> ComplexArray:
-    """(e^x - 1 - x) / x^2, accurate for every complex x with Re x <= 0 (and small |x|)."""
-    x = np.asarray(x, dtype=complex)
-    xs = np.where(x == 0.0, 1.0, x)
-    return _series_where_small(x, (np.expm1(xs) - xs) / xs**2, _PHI2)
-
-
-def psi2(x: ComplexArray) -> ComplexArray:
-    """(1 + (x - 1) e^x) / x^2 = e^x phi2(-x), accurate for Re x <= 0."""
-    x = np.asarray(x, dtype=complex)
-    xs = np.where(x == 0.0, 1.0, x)
-    return _series_where_small(x, (1.0 + (xs - 1.0) * np.exp(xs)) / xs**2, _PSI2)
-
 
 @dataclass(frozen=True)
 class Rates:

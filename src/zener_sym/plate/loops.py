@@ -19,8 +19,8 @@ import math
 import numpy as np
 from numba import njit
 
-#: Below this |x| phi2 and psi2 are summed as series (12 terms: the next is below 1e-17 there);
-#: the same threshold and terms as :func:`.kernels.phi2` and :func:`.kernels.psi2`.
+#: Below this |x| phi2 and psi2 are summed as series (12 terms: the next is below 1e-17 there),
+#: where their closed forms would lose digits to cancellation.
 SERIES = 0.25
 _TERMS = 12
 PHI2_COEF = np.array([1.0 / math.factorial(n) for n in range(2, 2 + _TERMS)])

@@ -1,16 +1,16 @@
 """One contact, stepped on a uniform grid with the force solved implicitly at each node.
 
 From the contact's start t_s (delta = 0, F = 0) the force is piecewise linear on the nodes
-t_k = t_s + k h. The approach at node k is then
+t_k = t_s + k h. Each mode then steps exactly from node to node (:class:`.kernels.Kernel`:
+B_{k+1} = E B_k + P F_k + Q F_{k+1}), and the ball as x'' = -F, so the approach at node k + 1 is
 
-    delta_k = d_k - sum_{j<k} L_{k-j} F_j - (L_0 + C_res) F_k,
+    delta_{k+1} = D_{k+1} - (h^2/6 + sum Re Q + C_res) F_{k+1},
 
-with d_k the free motion of ball and modes from the start state (exact) and L the hat responses
-of :mod:`.kernels`, so each step costs its share of a block's history product and a scalar
-Newton solve of F_k = max(delta_k, 0)^{3/2}. When delta_k <= 0 the contact has ended inside the
-last step: its end t_e is where the force, linear from F_{k-1} to 0 over [t_{k-1}, t_e], brings
-delta back to 0 (a scalar root in the partial step's width, which exists because
-delta_{k-1} > 0 >= delta_k; found by Newton kept inside that bracket).
+with D_{k+1} known from the state at node k; each node costs one pass over the modes and a scalar
+Newton solve of F = max(delta, 0)^{3/2} (:func:`.loops.march`). When D_{k+1} <= 0 the contact has
+ended inside that step: its end t_e is where the force, linear from F_k to 0 over [t_k, t_e],
+brings delta back to 0 (a scalar root in the partial step's width, which exists because
+delta_k > 0 >= D_{k+1}; found by Newton kept inside that bracket, :func:`.loops.contact_end`).
 """
 from __future__ import annotations
 
@@ -91,9 +91,9 @@ def step_contact(kernel: Kernel, c_res: float, x_s: float, v_s: float, B_s: Comp
     """
     h, n = kernel.h, len(kernel.E)
     limit = int(min(max_steps, max(MAX_WORK // n, 1)))
-    k, F, x, v, B, D = compiled().march(kernel.E, kernel.P, kernel.Q, np.array(B_s, dtype=complex),
-                                     float(x_s), float(v_s), h, float(c_res),
-                                     int(4.0 / h) + 16, limit)
+    k, F, x, v, B, D = compiled().march(kernel.E, kernel.P, kernel.Q,
+                                        np.asarray(B_s, dtype=complex), float(x_s), float(v_s), h,
+                                        float(c_res), int(4.0 / h) + 16, limit)
     if k < 0:
         if limit < max_steps:
             raise RuntimeError(f"a contact with {n} modes needs more than {limit} steps of "
